@@ -1,0 +1,16 @@
+# Warning flags shared by every target: -Wall -Wextra -Wpedantic everywhere,
+# -Wconversion in addition for the C99 runtime (see DEVELOPERS guide).
+function(admitgen_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(ADMITGEN_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+function(admitgen_strict_c_warnings target)
+  admitgen_warnings(${target})
+  target_compile_options(${target} PRIVATE -Wconversion -Wsign-conversion -Wcast-qual -Wundef -Wshadow)
+endfunction()
+
+# Sanitizer flags for the ASan+UBSan CTest configuration.
+set(ADMITGEN_SANITIZER_FLAGS -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)

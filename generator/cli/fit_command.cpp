@@ -1,0 +1,102 @@
+#include "cli/fit_command.hpp"
+
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "core/progress.hpp"
+#include "data/csv_reader.hpp"
+#include "output/fit_json.hpp"
+#include "selection/fit.hpp"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace admitgen::cli {
+namespace {
+
+FitSettings to_settings(const FitOptions& o) {
+  FitSettings s;
+  s.qmax = o.qmax;
+  s.smax = o.smax;
+  s.sampler.live = o.live;
+  s.sampler.seed = o.seed;
+  s.sampler.dlogz = o.dlogz;
+  s.sampler.max_iterations = o.max_iterations;
+  s.sampler.slices = o.slices;
+  s.threads = o.threads;
+  s.rule = SelectionRule::parse(o.select);
+  s.data_count = parse_data_count(o.likelihood_k);
+  s.reduce_symmetry = !o.no_symmetry_reduction;
+  if (!o.priors.empty()) {
+    s.priors = PriorRanges::from_file(o.priors);
+    s.priors_origin = o.priors;
+  }
+  return s;
+}
+
+void print_summary(const FitResult& fit) {
+  const auto& best = fit.models[fit.selected];
+  fmt::print("{:<6} {:>12} {:>7} {:>10} {:>11} {:>9} {:>8}\n", "order", "ln Z", "± err", "BF [dB]", "calls", "seconds",
+             "buffers");
+  for (const auto& m : fit.models)
+    fmt::print("{:<6} {:>12.2f} {:>7.2f} {:>10.1f} {:>11} {:>9.2f} {:>8}{}\n", m.order.name(), m.run.log_z,
+               m.run.log_z_error, deciban(m.run.log_z, best.run.log_z), m.run.calls, m.seconds, m.order.buffers(),
+               &m == &best ? "  <- selected" : "");
+}
+
+}  // namespace
+
+void setup_fit_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<FitOptions>();
+  auto* sub = app.add_subcommand("fit", "Bayesian order selection and parameter estimation of a multipole admittance");
+  sub->footer(
+      "Example:\n  admitgen fit samples/basotect_tuberlin/rect_5cm.csv --columns f,_,_,_,_,re,im,_ "
+      "--qmax 2 --smax 2 --out out/rect_5cm\n"
+      "Writes OUT/fit.json (schema admitgen.fit/1) and prints the evidence table.");
+  sub->add_option("data", opt->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
+  sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
+  add_data_options(*sub, opt->read);
+  sub->add_option("--qmax", opt->qmax, "Largest number of real poles Q")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
+  sub->add_option("--smax", opt->smax, "Largest number of complex pole pairs S")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
+  sub->add_option("--live", opt->live, "Live points of nested sampling")->check(CLI::Range(10, 100000))->capture_default_str();
+  sub->add_option("--seed", opt->seed, "Random seed (each order derives its own stream)")->capture_default_str();
+  sub->add_option("--threads,-j", opt->threads, "Worker threads over orders (0 = all cores); results do not depend on it")
+      ->check(CLI::Range(0, 1024))->capture_default_str();
+  sub->add_option("--select", opt->select, "Selection rule: best | cheapest:DB (fewest buffers within DB deciban of the best)")
+      ->capture_default_str();
+  sub->add_option("--priors", opt->priors, "JSON prior ranges overriding Table 1, e.g. {\"lambda\": [0, 2e5]}");
+  sub->add_option("--likelihood-k", opt->likelihood_k, "Real data per complex point: 2N (default) or N (the paper's)")
+      ->check(CLI::IsMember({"2N", "N"}))->capture_default_str();
+  sub->add_option("--dlogz", opt->dlogz, "Stop when the live points can change ln Z by less than this")
+      ->check(CLI::Range(1e-6, 10.0))->capture_default_str();
+  sub->add_option("--max-iterations", opt->max_iterations, "Iteration cap per order (safety net)")
+      ->check(CLI::Range(1L, 100'000'000L))->capture_default_str();
+  sub->add_option("--slices", opt->slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
+  sub->add_flag("--no-symmetry-reduction", opt->no_symmetry_reduction,
+                "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
+  sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
+  sub->callback([opt, &exit_code] { exit_code = run_fit_command(*opt); });
+}
+
+int run_fit_command(const FitOptions& o) {
+  const ReadOptions read = o.read.to_read_options();
+  const FitSettings settings = to_settings(o);
+  ensure_writable_directory(o.out);
+  const Measurement data = read_measurement(o.data, read);
+  if (!o.quiet)
+    for (const auto& w : data.warnings) fmt::print(stderr, "warning: {}\n", w);
+  Progress progress(!o.quiet);
+  progress.message(fmt::format("fitting {} points {:.6g}-{:.6g} Hz over Q0-{} x S0-{}", data.size(), data.f_hz[0],
+                               data.f_hz[data.size() - 1], o.qmax, o.smax));
+  const FitResult fit = run_fit(data, settings, progress);
+  const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
+  write_file_atomically(path, fit_to_json(data, read, settings, fit).dump(2) + "\n");
+  if (!o.quiet) {
+    print_summary(fit);
+    fmt::print("selected {} ({}); wrote {}\n", fit.models[fit.selected].order.name(), settings.rule.describe(), path);
+  }
+  return 0;
+}
+
+}  // namespace admitgen::cli

@@ -1,0 +1,53 @@
+/// @file
+/// Error types. Bad input and impossible options are exceptions that carry what a user needs to fix
+/// them (file, line, offending value); only `main` turns them into exit code 2. Broken internal
+/// invariants go through ADMITGEN_ENSURE and are programming errors.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace admitgen {
+
+/// Bad user input: a malformed data file, an impossible option, an unwritable path. Exit code 2.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An InputError located in a file: message reads "FILE:LINE: what (value 'VALUE')".
+class FileError : public InputError {
+ public:
+  FileError(const std::string& path, long line, const std::string& what, const std::string& value = {})
+      : InputError(format(path, line, what, value)), path_(path), line_(line) {}
+  const std::string& path() const { return path_; }
+  long line() const { return line_; }
+
+ private:
+  static std::string format(const std::string& path, long line, const std::string& what,
+                            const std::string& value) {
+    std::string where = line > 0 ? fmt::format("{}:{}", path, line) : path;
+    return value.empty() ? fmt::format("{}: {}", where, what)
+                         : fmt::format("{}: {} (value '{}')", where, what, value);
+  }
+  std::string path_;
+  long line_;
+};
+
+/// A violated internal invariant: a bug in admitgen, never the user's fault.
+class InternalError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
+}  // namespace admitgen
+
+/// Checks an invariant in every build type (unlike assert) and throws InternalError with context.
+#define ADMITGEN_ENSURE(expr, ...)                                                              \
+  do {                                                                                          \
+    if (!(expr))                                                                                \
+      throw ::admitgen::InternalError(fmt::format("{}:{}: invariant '{}' failed: {}", __FILE__, \
+                                                  __LINE__, #expr, fmt::format(__VA_ARGS__)));  \
+  } while (false)

@@ -1,0 +1,137 @@
+#include "inference/nested_sampler.hpp"
+
+#include "core/errors.hpp"
+#include "core/rng.hpp"
+#include "inference/slice_step.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace admitgen {
+namespace {
+
+double log_add_exp(double a, double b) {
+  if (a == -std::numeric_limits<double>::infinity()) return b;
+  if (b == -std::numeric_limits<double>::infinity()) return a;
+  const double m = std::max(a, b);
+  return m + std::log1p(std::exp(-std::abs(a - b)));
+}
+
+/// Lower Cholesky factor of the live points' sample covariance (columns are points). A tiny ridge
+/// keeps it defined when the live set is degenerate in some direction.
+Eigen::MatrixXd whitening_axes(const Eigen::MatrixXd& live_u) {
+  const Eigen::VectorXd mean = live_u.rowwise().mean();
+  const Eigen::MatrixXd centred = live_u.colwise() - mean;
+  Eigen::MatrixXd cov = centred * centred.transpose() / static_cast<double>(live_u.cols() - 1);
+  const double ridge = 1e-12 * std::max(cov.diagonal().maxCoeff(), 1e-300);
+  cov.diagonal().array() += ridge;
+  Eigen::LLT<Eigen::MatrixXd> llt(cov);
+  if (llt.info() != Eigen::Success) {
+    Eigen::MatrixXd diag = Eigen::MatrixXd::Zero(cov.rows(), cov.cols());
+    diag.diagonal() = cov.diagonal().cwiseSqrt();
+    return diag;
+  }
+  return llt.matrixL();
+}
+
+/// Running evidence and information (Skilling 2006, eq. 17 for H).
+struct EvidenceAccumulator {
+  double log_z = -std::numeric_limits<double>::infinity();
+  double h = 0.0;
+  void add(double log_w, double log_l) {
+    const double new_log_z = log_add_exp(log_z, log_w);
+    const double h_part = std::exp(log_w - new_log_z) * log_l;
+    const double h_prev = log_z == -std::numeric_limits<double>::infinity()
+                              ? 0.0
+                              : std::exp(log_z - new_log_z) * (h + log_z);
+    h = h_part + h_prev - new_log_z;
+    log_z = new_log_z;
+  }
+};
+
+}  // namespace
+
+NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, const LogLikelihoodFn& log_likelihood,
+                              const NestedSettings& settings, const NestedProgressFn& progress) {
+  ADMITGEN_ENSURE(dim >= 1, "dimension {}", dim);
+  ADMITGEN_ENSURE(settings.live >= 2, "live points {}", settings.live);
+  const int n = settings.live;
+  const int slices = settings.slices > 0 ? settings.slices : 3 + dim;
+  const int cov_interval = settings.covariance_interval > 0 ? settings.covariance_interval : std::max(1, n / 10);
+  Rng rng(settings.seed);
+
+  NestedRun run;
+  run.dim = dim;
+  Eigen::MatrixXd live_u(dim, n), live_theta(dim, n);
+  Eigen::VectorXd live_log_l(n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < dim; ++k) live_u(k, i) = rng.uniform();
+    prior_transform(live_u.col(i).data(), live_theta.col(i).data());
+    live_log_l[i] = log_likelihood(live_theta.col(i).data());
+    ++run.calls;
+  }
+
+  SliceStep step(dim, prior_transform, log_likelihood);
+  EvidenceAccumulator acc;
+  const double log_shrink = -1.0 / n;                         // ln(X_i / X_{i−1})
+  const double log_width_factor = std::log(-std::expm1(log_shrink));  // ln(1 − e^{−1/n})
+  double log_x = 0.0;                                         // ln X_{i−1}
+  Eigen::VectorXd u(dim), theta(dim);
+  run.stopped_by = "max_iterations";
+  for (long it = 0; it < settings.max_iterations; ++it) {
+    Eigen::Index worst = 0;
+    const double log_l_min = live_log_l.minCoeff(&worst);
+    const double log_w = log_l_min + log_x + log_width_factor;  // L_i (X_{i−1} − X_i)
+    acc.add(log_w, log_l_min);
+    run.samples.insert(run.samples.end(), live_theta.col(worst).data(), live_theta.col(worst).data() + dim);
+    run.log_likelihood.push_back(log_l_min);
+    run.log_weight.push_back(log_w);
+    log_x += log_shrink;
+    run.iterations = it + 1;
+
+    const double remaining = log_add_exp(acc.log_z, live_log_l.maxCoeff() + log_x) - acc.log_z;
+    if (progress && it % 500 == 0) progress(NestedStatus{it, acc.log_z, remaining, run.calls});
+    if (remaining < settings.dlogz) {
+      run.stopped_by = "dlogz";
+      live_log_l[worst] = -std::numeric_limits<double>::infinity();  // already dead: not a live point
+      break;
+    }
+
+    if (it % cov_interval == 0) step.set_axes(whitening_axes(live_u));
+    // Start from a copy of a random surviving live point; it already satisfies L > L*.
+    Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n - 1)));
+    if (start >= worst) ++start;
+    u = live_u.col(start);
+    theta = live_theta.col(start);
+    double log_l = live_log_l[start];
+    run.calls += step.move(u, theta, log_l, log_l_min, slices, rng);
+    live_u.col(worst) = u;
+    live_theta.col(worst) = theta;
+    live_log_l[worst] = log_l;
+  }
+
+  // The remaining live points share the last volume X equally (Skilling 2006, §5).
+  std::vector<Eigen::Index> order;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (std::isfinite(live_log_l[i])) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return live_log_l[a] < live_log_l[b]; });
+  const double log_share = log_x - std::log(static_cast<double>(order.size()));
+  for (Eigen::Index i : order) {
+    const double log_w = live_log_l[i] + log_share;
+    acc.add(log_w, live_log_l[i]);
+    run.samples.insert(run.samples.end(), live_theta.col(i).data(), live_theta.col(i).data() + dim);
+    run.log_likelihood.push_back(live_log_l[i]);
+    run.log_weight.push_back(log_w);
+  }
+  run.log_z = acc.log_z;
+  run.information = std::max(acc.h, 0.0);
+  run.log_z_error = std::sqrt(run.information / n);
+  run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
+  return run;
+}
+
+}  // namespace admitgen

@@ -1,0 +1,61 @@
+/// @file
+/// Nested sampling (Skilling 2006) with a constrained step by slice sampling along random directions
+/// whitened by the live points' covariance (as PolyChord, Handley et al. 2015, and dynesty's
+/// "rslice", Speagle 2020). The sampler knows nothing about acoustics: it takes a prior transform
+/// from the unit cube and a log-likelihood, both over flat vectors.
+///
+/// Bookkeeping (Skilling 2006, §3-4): after i deaths the expected prior volume is X_i = e^{−i/n}; dead
+/// point i carries weight w_i = L_i (X_{i−1} − X_i); Z = Σ w_i plus the live points' share X_end·mean(L)
+/// at the end; the information H = Σ (w_i/Z) ln(L_i/Z); the error of ln Z is √(H/n).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace admitgen {
+
+struct NestedSettings {
+  int live = 500;                      ///< number of live points n
+  double dlogz = 0.01;                 ///< stop when ln(Z + X·L_max) − ln Z < dlogz
+  long max_iterations = 1'000'000;     ///< safety cap on deaths
+  int slices = 0;                      ///< 1-D slices per replacement; 0 = automatic (3 + dim)
+  std::uint64_t seed = 1;
+  int covariance_interval = 0;         ///< iterations between covariance updates; 0 = live/10
+};
+
+/// Periodic status for progress display.
+struct NestedStatus {
+  long iteration;
+  double log_z;
+  double remaining;  ///< current ln(Z + X·L_max) − ln Z
+  long calls;
+};
+
+struct NestedRun {
+  int dim = 0;
+  std::vector<double> samples;         ///< row-major, one row of dim θ values per point (dead, then final live)
+  std::vector<double> log_likelihood;  ///< per point
+  std::vector<double> log_weight;      ///< ln(L_i ΔX_i), unnormalised; posterior p_i = exp(log_weight_i − log_z)
+  double log_z = 0.0;
+  double log_z_error = 0.0;            ///< √(H/n)
+  double information = 0.0;            ///< H in nats
+  double max_log_likelihood = 0.0;
+  long calls = 0;                      ///< likelihood evaluations (initial live points included)
+  long iterations = 0;                 ///< deaths
+  std::string stopped_by;              ///< "dlogz" or "max_iterations"
+
+  std::size_t size() const { return log_likelihood.size(); }
+  const double* point(std::size_t i) const { return samples.data() + i * static_cast<std::size_t>(dim); }
+};
+
+using PriorTransformFn = std::function<void(const double* u, double* theta)>;
+using LogLikelihoodFn = std::function<double(const double* theta)>;
+using NestedProgressFn = std::function<void(const NestedStatus&)>;
+
+/// Runs nested sampling to completion. Deterministic for a given seed (single-threaded).
+NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, const LogLikelihoodFn& log_likelihood,
+                              const NestedSettings& settings, const NestedProgressFn& progress = {});
+
+}  // namespace admitgen

@@ -1,0 +1,142 @@
+#include "inference/priors.hpp"
+
+#include "core/errors.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+namespace admitgen {
+namespace {
+
+constexpr std::pair<Family, const char*> kFamilyKeys[] = {
+    {Family::g_inf, "G_inf"}, {Family::a, "A"},         {Family::lambda, "lambda"}, {Family::b, "B"},
+    {Family::c, "C"},         {Family::alpha, "alpha"}, {Family::beta, "beta"}};
+
+/// Fills x[0..n) with n sorted uniforms on [0,1), ascending, from n independent uniforms u
+/// (order-statistics transform; the top one is the max of n uniforms, u^{1/n}).
+void sorted_uniforms(const double* u, int n, double* x) {
+  double top = 1.0;
+  for (int k = n; k >= 1; --k) {
+    top *= std::pow(u[k - 1], 1.0 / k);
+    x[k - 1] = top;
+  }
+}
+
+}  // namespace
+
+const Range& PriorRanges::of(Family f) const { return const_cast<PriorRanges*>(this)->of(f); }
+
+Range& PriorRanges::of(Family f) {
+  switch (f) {
+    case Family::g_inf: return g_inf;
+    case Family::a: return a;
+    case Family::lambda: return lambda;
+    case Family::b: return b;
+    case Family::c: return c;
+    case Family::alpha: return alpha;
+    case Family::beta: return beta;
+  }
+  throw InternalError("unhandled Family");
+}
+
+void PriorRanges::validate(const std::string& origin) const {
+  for (const auto& [family, key] : kFamilyKeys) {
+    const Range& r = of(family);
+    if (!(std::isfinite(r.lo) && std::isfinite(r.hi) && r.lo < r.hi))
+      throw InputError(fmt::format("{}: prior range of {} is [{}, {}]; need finite lo < hi", origin, key, r.lo, r.hi));
+  }
+  if (lambda.lo < 0.0 || alpha.lo < 0.0)
+    throw InputError(fmt::format("{}: lambda and alpha priors must start at >= 0 (causality: poles in the left "
+                                 "half plane)", origin));
+}
+
+PriorRanges PriorRanges::from_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw FileError(path, 0, "cannot open prior file");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw FileError(path, 0, fmt::format("not valid JSON: {}", e.what()));
+  }
+  if (!j.is_object()) throw FileError(path, 0, "expected a JSON object of {\"family\": [lo, hi]}");
+  PriorRanges ranges = table1();
+  for (const auto& [key, value] : j.items()) {
+    const auto* entry = std::find_if(std::begin(kFamilyKeys), std::end(kFamilyKeys),
+                                     [&](const auto& kv) { return key == kv.second; });
+    if (entry == std::end(kFamilyKeys))
+      throw FileError(path, 0, "unknown prior key (expected G_inf, A, lambda, B, C, alpha, beta)", key);
+    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
+      throw FileError(path, 0, fmt::format("prior '{}' must be [lo, hi]", key), value.dump());
+    ranges.of(entry->first) = Range{value[0].get<double>(), value[1].get<double>()};
+  }
+  ranges.validate(path);
+  return ranges;
+}
+
+nlohmann::ordered_json PriorRanges::to_json() const {
+  nlohmann::ordered_json j;
+  for (const auto& [family, key] : kFamilyKeys) j[key] = {of(family).lo, of(family).hi};
+  return j;
+}
+
+PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bool reduce_symmetry)
+    : order_(order), ranges_(ranges), reduced_(reduce_symmetry) {
+  ranges_.validate("priors");
+  if (reduced_ && order.s() > 0 && (ranges_.beta.lo != -ranges_.beta.hi || ranges_.c.lo != -ranges_.c.hi))
+    throw InputError("symmetry reduction needs beta and C prior ranges symmetric about 0; "
+                     "make them symmetric or pass --no-symmetry-reduction");
+}
+
+void PriorTransform::operator()(const double* u, double* theta) const {
+  const auto scale = [](const Range& r, double x) { return r.lo + r.width() * x; };
+  theta[Order::g_inf()] = scale(ranges_.g_inf, u[Order::g_inf()]);
+  for (int q = 0; q < order_.q(); ++q) theta[Order::a(q)] = scale(ranges_.a, u[Order::a(q)]);
+  for (int s = 0; s < order_.s(); ++s) {
+    theta[order_.b(s)] = scale(ranges_.b, u[order_.b(s)]);
+    theta[order_.c(s)] = scale(ranges_.c, u[order_.c(s)]);
+    theta[order_.alpha(s)] = scale(ranges_.alpha, u[order_.alpha(s)]);
+  }
+  if (!reduced_) {
+    for (int q = 0; q < order_.q(); ++q) theta[Order::lambda(q)] = scale(ranges_.lambda, u[Order::lambda(q)]);
+    for (int s = 0; s < order_.s(); ++s) theta[order_.beta(s)] = scale(ranges_.beta, u[order_.beta(s)]);
+    return;
+  }
+  double in[Order::kMaxPoles], x[Order::kMaxPoles];
+  for (int q = 0; q < order_.q(); ++q) in[q] = u[Order::lambda(q)];
+  sorted_uniforms(in, order_.q(), x);
+  for (int q = 0; q < order_.q(); ++q) theta[Order::lambda(q)] = scale(ranges_.lambda, x[q]);
+  for (int s = 0; s < order_.s(); ++s) in[s] = u[order_.beta(s)];
+  sorted_uniforms(in, order_.s(), x);
+  for (int s = 0; s < order_.s(); ++s) theta[order_.beta(s)] = ranges_.beta.hi * x[s];  // |β| ~ U(0, hi)
+}
+
+void fold_to_reduced(const Order& order, double* theta) {
+  std::vector<std::pair<double, double>> poles;  // (λ, A)
+  for (int q = 0; q < order.q(); ++q) poles.emplace_back(theta[Order::lambda(q)], theta[Order::a(q)]);
+  std::sort(poles.begin(), poles.end());
+  for (int q = 0; q < order.q(); ++q) {
+    theta[Order::lambda(q)] = poles[static_cast<std::size_t>(q)].first;
+    theta[Order::a(q)] = poles[static_cast<std::size_t>(q)].second;
+  }
+  std::vector<std::array<double, 4>> pairs;  // (β, B, C, α) with β ≥ 0
+  for (int s = 0; s < order.s(); ++s) {
+    const double sign = theta[order.beta(s)] < 0.0 ? -1.0 : 1.0;
+    pairs.push_back({sign * theta[order.beta(s)], theta[order.b(s)], sign * theta[order.c(s)], theta[order.alpha(s)]});
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (int s = 0; s < order.s(); ++s) {
+    const auto& p = pairs[static_cast<std::size_t>(s)];
+    theta[order.beta(s)] = p[0];
+    theta[order.b(s)] = p[1];
+    theta[order.c(s)] = p[2];
+    theta[order.alpha(s)] = p[3];
+  }
+}
+
+}  // namespace admitgen

@@ -1,0 +1,26 @@
+/// @file
+/// Evaluation of the multipole admittance (method.md; paper eq. 2-3), e^{+jωt}:
+///   G(ω) = G∞ + Σ_q A_q/(λ_q + jω) + Σ_s [Θ_s/(θ_s + jω) + Θ_s*/(θ_s* + jω)],
+///   Θ_s = B_s + jC_s, θ_s = α_s + jβ_s.
+/// One code path for every order: the loops run over terms, each term is whole-array arithmetic on
+/// the frequency grid (Eigen arrays vectorise it), and there is no per-order special case.
+#pragma once
+
+#include "model/order.hpp"
+
+#include <Eigen/Core>
+
+namespace admitgen {
+
+/// Real and imaginary parts of G at angular frequencies ω (rad/s), written into re, im.
+/// Term algebra, with d = λ² + ω², d± = α² + (ω ± β)²:
+///   A/(λ + jω) = A(λ − jω)/d
+///   (B + jC)/(α + j(ω + β)) = [Bα + C(ω + β) + j(Cα − B(ω + β))]/d+
+///   (B − jC)/(α + j(ω − β)) = [Bα − C(ω − β) − j(Cα + B(ω − β))]/d−
+void evaluate_multipole(const Order& order, const double* theta, const Eigen::ArrayXd& omega,
+                        Eigen::ArrayXd& re, Eigen::ArrayXd& im);
+
+/// Convenience form returning G as complex values.
+Eigen::ArrayXcd evaluate_multipole(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega);
+
+}  // namespace admitgen

@@ -1,0 +1,167 @@
+#include "selection/fit.hpp"
+
+#include "core/errors.hpp"
+#include "model/multipole.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+namespace admitgen {
+
+std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
+  return derive_seed(user_seed, static_cast<std::uint64_t>(order.q()) * 1000u + static_cast<std::uint64_t>(order.s()));
+}
+
+ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
+                      const NestedProgressFn& progress) {
+  const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
+  const Likelihood likelihood(data, order, settings.data_count);
+  NestedSettings sampler = settings.sampler;
+  sampler.seed = order_seed(settings.sampler.seed, order);
+  const auto start = std::chrono::steady_clock::now();
+  ModelResult result{order, run_nested_sampling(
+                                order.dim(), [&](const double* u, double* th) { transform(u, th); },
+                                [&](const double* th) { return likelihood(th); }, sampler, progress),
+                     0.0, {}};
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!settings.reduce_symmetry)
+    for (std::size_t i = 0; i < result.run.size(); ++i)
+      fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
+  result.parameters = summarize(result.run, order.parameter_names());
+  return result;
+}
+
+PredictiveBand predictive_band(const Measurement& data, const ModelResult& model, int draws, std::uint64_t seed) {
+  Rng rng(seed);
+  const auto idx = resample_indices(posterior_weights(model.run), static_cast<std::size_t>(draws), rng);
+  const Eigen::ArrayXd omega = data.omega();
+  const Eigen::Index n = omega.size();
+  Eigen::ArrayXXd re(n, draws), im(n, draws), al(n, draws);
+  Eigen::ArrayXd r, i;
+  for (int d = 0; d < draws; ++d) {
+    evaluate_multipole(model.order, model.run.point(idx[static_cast<std::size_t>(d)]), omega, r, i);
+    re.col(d) = r;
+    im.col(d) = i;
+    Eigen::ArrayXcd g(n);
+    g.real() = r;
+    g.imag() = i;
+    al.col(d) = absorption(g);
+  }
+  const Eigen::ArrayXd equal = Eigen::ArrayXd::Constant(draws, 1.0);
+  PredictiveBand band;
+  band.f_hz = data.f_hz;
+  band.draws = draws;
+  const auto quantiles = [&](const Eigen::ArrayXXd& m, Eigen::ArrayXd& lo, Eigen::ArrayXd& med, Eigen::ArrayXd& hi) {
+    lo.resize(n), med.resize(n), hi.resize(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const Eigen::ArrayXd row = m.row(k).transpose();
+      lo[k] = weighted_quantile(row, equal, 0.025);
+      med[k] = weighted_quantile(row, equal, 0.5);
+      hi[k] = weighted_quantile(row, equal, 0.975);
+    }
+  };
+  quantiles(re, band.re_lo, band.re_median, band.re_hi);
+  quantiles(im, band.im_lo, band.im_median, band.im_hi);
+  quantiles(al, band.alpha_lo, band.alpha_median, band.alpha_hi);
+  return band;
+}
+
+namespace {
+
+/// Status line shared by the workers: one entry per order currently running.
+class GridProgress {
+ public:
+  GridProgress(Progress& out, std::size_t total) : out_(out), total_(total) {}
+  void running(const Order& o, const NestedStatus& s) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    active_[o.name()] = fmt::format("{} it {} lnZ {:.1f} (Δ {:.2g})", o.name(), s.iteration, s.log_z, s.remaining);
+    show();
+  }
+  void done(const ModelResult& m) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    active_.erase(m.order.name());
+    ++done_;
+    out_.message(fmt::format("  {:<5} ln Z = {:10.2f} ± {:.2f}  ({} calls, {:.1f} s)", m.order.name(), m.run.log_z,
+                             m.run.log_z_error, m.run.calls, m.seconds));
+    show();
+  }
+
+ private:
+  void show() {
+    std::string line = fmt::format("[{}/{} orders]", done_, total_);
+    for (const auto& [name, text] : active_) line += "  " + text;
+    out_.update(line);
+  }
+  Progress& out_;
+  std::size_t total_, done_ = 0;
+  std::mutex mutex_;
+  std::map<std::string, std::string> active_;
+};
+
+void check_constrainable(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid) {
+  const int k = static_cast<int>(settings.data_count == DataCount::two_per_point ? 2 * data.size() : data.size());
+  for (const Order& o : grid)
+    if (k < o.dim() + 2)
+      throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
+                                   "--qmax/--smax or supply more frequency points",
+                                   o.name(), o.dim(), k));
+}
+
+}  // namespace
+
+FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress) {
+  const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
+  check_constrainable(data, settings, grid);
+  // Largest orders first so that the two workers finish together.
+  std::vector<std::size_t> queue(grid.size());
+  std::iota(queue.begin(), queue.end(), std::size_t{0});
+  std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
+
+  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0.0, {}});
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  GridProgress status(progress, grid.size());
+  const auto worker = [&] {
+    for (std::size_t k; (k = next.fetch_add(1)) < queue.size();) {
+      const Order& order = grid[queue[k]];
+      try {
+        results[queue[k]] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); });
+        status.done(results[queue[k]]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  };
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min<std::size_t>(grid.size(), settings.threads > 0 ? static_cast<unsigned>(settings.threads) : hw);
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  progress.finish();
+  if (failure) std::rethrow_exception(failure);
+
+  FitResult fit;
+  std::vector<double> log_z;
+  std::vector<int> buffers;
+  for (const auto& m : results) {
+    log_z.push_back(m.run.log_z);
+    buffers.push_back(m.order.buffers());
+  }
+  fit.selected = settings.rule.select(log_z, buffers);
+  fit.models = std::move(results);
+  constexpr int kPredictiveDraws = 1000;
+  fit.predictive = predictive_band(data, fit.models[fit.selected], kPredictiveDraws,
+                                   derive_seed(settings.sampler.seed, 0xbadULL));
+  return fit;
+}
+
+}  // namespace admitgen
