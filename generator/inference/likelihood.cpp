@@ -21,14 +21,14 @@ std::string describe(DataCount count) {
 
 Likelihood::Likelihood(const Measurement& data, const Order& order, DataCount count)
     : order_(order),
-      omega_(data.omega()),
+      grid_(data.omega()),
       d_re_(data.y.real()),
       d_im_(data.y.imag()),
       k_(static_cast<int>(count == DataCount::two_per_point ? 2 * data.size() : data.size())),
       constant_(std::lgamma(0.5 * k_) - std::log(2.0) - 0.5 * k_ * std::log(EIGEN_PI)) {}
 
 double Likelihood::sum_squared_residual(const double* theta) const {
-  evaluate_multipole(order_, theta, omega_, re_, im_);
+  grid_.evaluate(order_, theta, re_, im_);
   return (d_re_ - re_).square().sum() + (d_im_ - im_).square().sum();
 }
 

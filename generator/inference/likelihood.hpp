@@ -7,6 +7,7 @@
 #pragma once
 
 #include "data/measurement.hpp"
+#include "model/multipole.hpp"
 #include "model/order.hpp"
 
 #include <Eigen/Core>
@@ -34,11 +35,12 @@ class Likelihood {
 
   const Order& order() const { return order_; }
   int k() const { return k_; }
-  Eigen::Index points() const { return omega_.size(); }
+  Eigen::Index points() const { return d_re_.size(); }
 
  private:
   Order order_;
-  Eigen::ArrayXd omega_, d_re_, d_im_;
+  MultipoleGrid grid_;
+  Eigen::ArrayXd d_re_, d_im_;
   int k_;
   double constant_;  ///< ln Γ(K/2) − ln 2 − (K/2) ln π
   mutable Eigen::ArrayXd re_, im_;

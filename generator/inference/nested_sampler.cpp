@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
+#include "inference/live_point_clusters.hpp"
 #include "inference/slice_step.hpp"
 
 #include <Eigen/Cholesky>
@@ -19,23 +20,6 @@ double log_add_exp(double a, double b) {
   if (b == -std::numeric_limits<double>::infinity()) return a;
   const double m = std::max(a, b);
   return m + std::log1p(std::exp(-std::abs(a - b)));
-}
-
-/// Lower Cholesky factor of the live points' sample covariance (columns are points). A tiny ridge
-/// keeps it defined when the live set is degenerate in some direction.
-Eigen::MatrixXd whitening_axes(const Eigen::MatrixXd& live_u) {
-  const Eigen::VectorXd mean = live_u.rowwise().mean();
-  const Eigen::MatrixXd centred = live_u.colwise() - mean;
-  Eigen::MatrixXd cov = centred * centred.transpose() / static_cast<double>(live_u.cols() - 1);
-  const double ridge = 1e-12 * std::max(cov.diagonal().maxCoeff(), 1e-300);
-  cov.diagonal().array() += ridge;
-  Eigen::LLT<Eigen::MatrixXd> llt(cov);
-  if (llt.info() != Eigen::Success) {
-    Eigen::MatrixXd diag = Eigen::MatrixXd::Zero(cov.rows(), cov.cols());
-    diag.diagonal() = cov.diagonal().cwiseSqrt();
-    return diag;
-  }
-  return llt.matrixL();
 }
 
 /// Running evidence and information (Skilling 2006, eq. 17 for H).
@@ -76,6 +60,10 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
   }
 
   SliceStep step(dim, prior_transform, log_likelihood);
+  // Clusters need enough points for a covariance: at least 2·dim and 20.
+  constexpr int kMaxClusters = 8;
+  const int min_cluster = std::max(2 * dim, 20);
+  LivePointClusters clusters;
   EvidenceAccumulator acc;
   const double log_shrink = -1.0 / n;                         // ln(X_i / X_{i−1})
   const double log_width_factor = std::log(-std::expm1(log_shrink));  // ln(1 − e^{−1/n})
@@ -101,14 +89,18 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
       break;
     }
 
-    if (it % cov_interval == 0) step.set_axes(whitening_axes(live_u));
-    // Start from a copy of a random surviving live point; it already satisfies L > L*.
+    if (it % cov_interval == 0) clusters = cluster_live_points(live_u, min_cluster, kMaxClusters);
+    // Start from a copy of a random surviving live point (it already satisfies L > L*) and move it
+    // with the axes of its cluster; the new point joins that cluster.
     Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n - 1)));
     if (start >= worst) ++start;
+    const int cluster = clusters.label[static_cast<std::size_t>(start)];
     u = live_u.col(start);
     theta = live_theta.col(start);
     double log_l = live_log_l[start];
+    step.set_axes(clusters.axes[static_cast<std::size_t>(cluster)]);
     run.calls += step.move(u, theta, log_l, log_l_min, slices, rng);
+    clusters.label[static_cast<std::size_t>(worst)] = cluster;
     live_u.col(worst) = u;
     live_theta.col(worst) = theta;
     live_log_l[worst] = log_l;

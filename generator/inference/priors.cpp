@@ -100,20 +100,25 @@ void PriorTransform::operator()(const double* u, double* theta) const {
   for (int s = 0; s < order_.s(); ++s) {
     theta[order_.b(s)] = scale(ranges_.b, u[order_.b(s)]);
     theta[order_.c(s)] = scale(ranges_.c, u[order_.c(s)]);
-    theta[order_.alpha(s)] = scale(ranges_.alpha, u[order_.alpha(s)]);
   }
   if (!reduced_) {
     for (int q = 0; q < order_.q(); ++q) theta[Order::lambda(q)] = scale(ranges_.lambda, u[Order::lambda(q)]);
-    for (int s = 0; s < order_.s(); ++s) theta[order_.beta(s)] = scale(ranges_.beta, u[order_.beta(s)]);
+    for (int s = 0; s < order_.s(); ++s) {
+      theta[order_.alpha(s)] = scale(ranges_.alpha, u[order_.alpha(s)]);
+      theta[order_.beta(s)] = scale(ranges_.beta, u[order_.beta(s)]);
+    }
     return;
   }
   double in[Order::kMaxPoles], x[Order::kMaxPoles];
   for (int q = 0; q < order_.q(); ++q) in[q] = u[Order::lambda(q)];
   sorted_uniforms(in, order_.q(), x);
   for (int q = 0; q < order_.q(); ++q) theta[Order::lambda(q)] = scale(ranges_.lambda, x[q]);
-  for (int s = 0; s < order_.s(); ++s) in[s] = u[order_.beta(s)];
+  for (int s = 0; s < order_.s(); ++s) in[s] = u[order_.alpha(s)];
   sorted_uniforms(in, order_.s(), x);
-  for (int s = 0; s < order_.s(); ++s) theta[order_.beta(s)] = ranges_.beta.hi * x[s];  // |β| ~ U(0, hi)
+  for (int s = 0; s < order_.s(); ++s) {
+    theta[order_.alpha(s)] = scale(ranges_.alpha, x[s]);
+    theta[order_.beta(s)] = ranges_.beta.hi * u[order_.beta(s)];  // |β| ~ U(0, hi)
+  }
 }
 
 void fold_to_reduced(const Order& order, double* theta) {

@@ -4,10 +4,15 @@
 ///
 /// Symmetry reduction: the likelihood is invariant under (β_s, C_s) → (−β_s, −C_s) for each pair and
 /// under any permutation of the real poles or of the pairs. The reduced space keeps one copy:
-/// λ_1 < … < λ_Q and 0 ≤ β_1 < … < β_S. It holds 1/(Q! S! 2^S) of the prior mass, and the reduced
-/// prior density is higher by exactly that factor, so Z = ∫ L π dθ is unchanged (the likelihood takes
-/// the same value on every copy). The ordered values are drawn by the order-statistics transform
-/// x_n = u_n^{1/n}, x_k = x_{k+1} u_k^{1/k} (density n! on 0 ≤ x_1 ≤ … ≤ x_n ≤ 1).
+/// λ_1 < … < λ_Q, α_1 < … < α_S and β_s ≥ 0. It holds 1/(Q! S! 2^S) of the prior mass and the
+/// reduced prior density is higher by exactly that factor, so Z = ∫ L π dθ is unchanged (L takes the
+/// same value on every copy). Any fundamental domain gives the same Z; pairs are labelled by their
+/// damping α rather than by β because a sharp and a broad resonance keep their labels when the broad
+/// one's β slides past the sharp one's (with β-sorting that move crosses the domain's seam and the
+/// sampler can lose the better mode: Q0S2 on the reference file). Reports fold samples to the
+/// contract's form (β ascending) afterwards with fold_to_reduced. The ordered values are drawn by the
+/// order-statistics transform x_n = u_n^{1/n}, x_k = x_{k+1} u_k^{1/k} (density n! on
+/// 0 ≤ x_1 ≤ … ≤ x_n ≤ 1).
 #pragma once
 
 #include "model/order.hpp"
@@ -63,8 +68,8 @@ class PriorTransform {
   bool reduced_;
 };
 
-/// Maps any θ to its representative in the reduced space (λ ascending, β ≥ 0 ascending); used to
-/// summarise runs sampled without reduction.
+/// Maps any θ to the contract's reporting form (λ ascending; β ≥ 0 with C flipped alongside, pairs by
+/// ascending β); applied to every run before it is summarised.
 void fold_to_reduced(const Order& order, double* theta);
 
 }  // namespace admitgen

@@ -1,5 +1,7 @@
 #include "inference/slice_step.hpp"
 
+#include "core/errors.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,7 +11,6 @@ SliceStep::SliceStep(int dim, const PriorTransformFn& transform, const LogLikeli
     : dim_(dim),
       transform_(transform),
       log_likelihood_(log_likelihood),
-      axes_(Eigen::MatrixXd::Identity(dim, dim)),
       direction_(dim),
       trial_(dim),
       theta_trial_(dim) {}
@@ -25,11 +26,12 @@ bool SliceStep::inside(const Eigen::VectorXd& u, double log_l_min, double& log_l
 long SliceStep::move(Eigen::VectorXd& u, Eigen::VectorXd& theta, double& log_l, double log_l_min, int slices,
                      Rng& rng) {
   constexpr int kMaxSteps = 1000;  // stepping-out cap per side; unit cube bounds it long before
+  ADMITGEN_ENSURE(axes_ != nullptr && axes_->rows() == dim_, "slice axes not set");
   long calls = 0;
   long expansions = 0, contractions = 0;
   for (int k = 0; k < slices; ++k) {
     for (int i = 0; i < dim_; ++i) direction_[i] = rng.normal();
-    direction_ = scale_ * (axes_ * direction_.normalized());
+    direction_ = scale_ * (*axes_ * direction_.normalized());
     // Initial bracket of unit width (in units of the direction), randomly placed around 0.
     double left = -rng.uniform(), right = left + 1.0, trial_log_l = 0.0;
     for (int step = 0; step < kMaxSteps; ++step, --left, ++expansions) {

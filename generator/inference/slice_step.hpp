@@ -19,7 +19,7 @@ class SliceStep {
   SliceStep(int dim, const PriorTransformFn& transform, const LogLikelihoodFn& log_likelihood);
 
   /// Sets the whitening matrix (lower Cholesky factor of the live points' covariance in u).
-  void set_axes(const Eigen::MatrixXd& cholesky) { axes_ = cholesky; }
+  void set_axes(const Eigen::MatrixXd& cholesky) { axes_ = &cholesky; }
 
   /// Moves (u, θ, ln L) by `slices` slice moves under ln L > log_l_min; returns calls made.
   long move(Eigen::VectorXd& u, Eigen::VectorXd& theta, double& log_l, double log_l_min, int slices, Rng& rng);
@@ -33,7 +33,7 @@ class SliceStep {
   int dim_;
   const PriorTransformFn& transform_;
   const LogLikelihoodFn& log_likelihood_;
-  Eigen::MatrixXd axes_;
+  const Eigen::MatrixXd* axes_ = nullptr;
   double scale_ = 1.0;
   Eigen::VectorXd direction_, trial_, theta_trial_;
 };

@@ -4,25 +4,32 @@
 
 namespace admitgen {
 
-void evaluate_multipole(const Order& order, const double* theta, const Eigen::ArrayXd& omega,
-                        Eigen::ArrayXd& re, Eigen::ArrayXd& im) {
-  re.setConstant(omega.size(), theta[Order::g_inf()]);
-  im.setZero(omega.size());
+MultipoleGrid::MultipoleGrid(const Eigen::ArrayXd& omega)
+    : omega_(omega), omega2_(omega.square()), dp_(omega.size()), dm_(omega.size()), inv_(omega.size()) {}
+
+void MultipoleGrid::evaluate(const Order& order, const double* theta, Eigen::ArrayXd& re, Eigen::ArrayXd& im) const {
+  re.setConstant(omega_.size(), theta[Order::g_inf()]);
+  im.setZero(omega_.size());
   for (int q = 0; q < order.q(); ++q) {
     const double a = theta[Order::a(q)], lam = theta[Order::lambda(q)];
-    const Eigen::ArrayXd inv = (lam * lam + omega.square()).inverse();
-    re += (a * lam) * inv;
-    im -= a * omega * inv;
+    inv_ = (lam * lam + omega2_).inverse();
+    re += (a * lam) * inv_;
+    im -= a * omega_ * inv_;
   }
   for (int s = 0; s < order.s(); ++s) {
     const double b = theta[order.b(s)], c = theta[order.c(s)];
     const double al = theta[order.alpha(s)], be = theta[order.beta(s)];
-    const Eigen::ArrayXd wp = omega + be, wm = omega - be;
-    const Eigen::ArrayXd ip = (al * al + wp.square()).inverse();
-    const Eigen::ArrayXd im_ = (al * al + wm.square()).inverse();
-    re += (b * al + c * wp) * ip + (b * al - c * wm) * im_;
-    im += (c * al - b * wp) * ip - (c * al + b * wm) * im_;
+    dp_ = al * al + (omega_ + be).square();
+    dm_ = al * al + (omega_ - be).square();
+    inv_ = (dp_ * dm_).inverse();
+    re += ((b * al + c * (omega_ + be)) * dm_ + (b * al - c * (omega_ - be)) * dp_) * inv_;
+    im += ((c * al - b * (omega_ + be)) * dm_ - (c * al + b * (omega_ - be)) * dp_) * inv_;
   }
+}
+
+void evaluate_multipole(const Order& order, const double* theta, const Eigen::ArrayXd& omega,
+                        Eigen::ArrayXd& re, Eigen::ArrayXd& im) {
+  MultipoleGrid(omega).evaluate(order, theta, re, im);
 }
 
 Eigen::ArrayXcd evaluate_multipole(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega) {

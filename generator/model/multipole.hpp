@@ -12,11 +12,27 @@
 
 namespace admitgen {
 
-/// Real and imaginary parts of G at angular frequencies ω (rad/s), written into re, im.
-/// Term algebra, with d = λ² + ω², d± = α² + (ω ± β)²:
-///   A/(λ + jω) = A(λ − jω)/d
-///   (B + jC)/(α + j(ω + β)) = [Bα + C(ω + β) + j(Cα − B(ω + β))]/d+
-///   (B − jC)/(α + j(ω − β)) = [Bα − C(ω − β) − j(Cα + B(ω − β))]/d−
+/// Frequency grid plus scratch space, so that repeated evaluation allocates nothing.
+class MultipoleGrid {
+ public:
+  explicit MultipoleGrid(const Eigen::ArrayXd& omega);
+  const Eigen::ArrayXd& omega() const { return omega_; }
+
+  /// Real and imaginary parts of G at the grid, written into re, im (resized if needed).
+  /// Term algebra, with d = λ² + ω², d± = α² + (ω ± β)²:
+  ///   A/(λ + jω) = A(λ − jω)/d
+  ///   (B + jC)/(α + j(ω + β)) = [Bα + C(ω + β) + j(Cα − B(ω + β))]/d+
+  ///   (B − jC)/(α + j(ω − β)) = [Bα − C(ω − β) − j(Cα + B(ω − β))]/d−
+  /// A pair costs one division: 1/d+ = d−/(d+ d−) and 1/d− = d+/(d+ d−) (d± ≤ ~1e11 for audio-band
+  /// ω and Table 1 ranges, so the product stays far from overflow).
+  void evaluate(const Order& order, const double* theta, Eigen::ArrayXd& re, Eigen::ArrayXd& im) const;
+
+ private:
+  Eigen::ArrayXd omega_, omega2_;
+  mutable Eigen::ArrayXd dp_, dm_, inv_;
+};
+
+/// One-off evaluation (allocates a grid); θ packed as model/order.hpp.
 void evaluate_multipole(const Order& order, const double* theta, const Eigen::ArrayXd& omega,
                         Eigen::ArrayXd& re, Eigen::ArrayXd& im);
 

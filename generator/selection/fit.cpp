@@ -30,8 +30,7 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
                                 [&](const double* th) { return likelihood(th); }, sampler, progress),
                      0.0, {}};
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!settings.reduce_symmetry)
-    for (std::size_t i = 0; i < result.run.size(); ++i)
+  for (std::size_t i = 0; i < result.run.size(); ++i)
       fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
   result.parameters = summarize(result.run, order.parameter_names());
   return result;

@@ -1,0 +1,110 @@
+/// @file
+/// Fit benchmark (a program, not a test): prints
+///  1. likelihood evaluations per second and ns per (frequency point × pole term) for several orders,
+///     with a plain std::complex loop over the same model as the baseline ratio;
+///  2. for each order of the Q0-3 × S0-3 grid on the reference file: likelihood calls, wall seconds,
+///     ln Z ± error;
+///  3. the whole grid's wall time with 1 and 2 threads.
+/// Usage: bench_fit [DATA.csv] [--quick]  (--quick skips the 1-thread grid)
+#include "core/progress.hpp"
+#include "data/csv_reader.hpp"
+#include "inference/likelihood.hpp"
+#include "inference/priors.hpp"
+#include "selection/fit.hpp"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <complex>
+#include <cstring>
+#include <string>
+
+using namespace admitgen;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+/// Baseline: the model written term by term with std::complex, no vectorisation.
+double naive_sum_squares(const Order& o, const double* th, const Measurement& m) {
+  double e = 0.0;
+  for (Eigen::Index i = 0; i < m.size(); ++i) {
+    const std::complex<double> jw(0.0, 2.0 * EIGEN_PI * m.f_hz[i]);
+    std::complex<double> g = th[0];
+    for (int q = 0; q < o.q(); ++q) g += th[Order::a(q)] / (th[Order::lambda(q)] + jw);
+    for (int s = 0; s < o.s(); ++s) {
+      const std::complex<double> big(th[o.b(s)], th[o.c(s)]), pole(th[o.alpha(s)], th[o.beta(s)]);
+      g += big / (pole + jw) + std::conj(big) / (std::conj(pole) + jw);
+    }
+    e += std::norm(m.y[i] - g);
+  }
+  return e;
+}
+
+void likelihood_throughput(const Measurement& data) {
+  fmt::print("## Likelihood throughput ({} points)\n", data.size());
+  fmt::print("{:<6} {:>6} {:>14} {:>12} {:>16} {:>14}\n", "order", "terms", "calls/s", "ns/call", "ns/(point*term)",
+             "vs std::complex");
+  Rng rng(7);
+  for (const Order o : {Order(0, 1), Order(1, 1), Order(2, 2), Order(3, 3)}) {
+    const PriorTransform t(o, PriorRanges::table1(), true);
+    const Likelihood like(data, o, DataCount::two_per_point);
+    constexpr int kSets = 64;
+    std::vector<double> thetas(static_cast<std::size_t>(kSets * o.dim())), u(static_cast<std::size_t>(o.dim()));
+    for (int k = 0; k < kSets; ++k) {
+      for (auto& x : u) x = rng.uniform();
+      t(u.data(), thetas.data() + k * o.dim());
+    }
+    const int terms = o.q() + 2 * o.s();
+    const long reps = 200000 / (1 + terms);
+    double sink = 0.0;
+    auto t0 = Clock::now();
+    for (long r = 0; r < reps; ++r) sink += like(thetas.data() + (r % kSets) * o.dim());
+    const double fast = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(reps);
+    t0 = Clock::now();
+    for (long r = 0; r < reps / 4; ++r) sink += naive_sum_squares(o, thetas.data() + (r % kSets) * o.dim(), data);
+    const double naive = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(reps / 4);
+    fmt::print("{:<6} {:>6} {:>14.3g} {:>12.1f} {:>16.3f} {:>13.2f}x{}\n", o.name(), terms, 1.0 / fast, fast * 1e9,
+               fast * 1e9 / (static_cast<double>(data.size()) * terms), naive / fast, sink == 0.123 ? "!" : "");
+  }
+}
+
+double grid(const Measurement& data, int threads, bool print_models) {
+  FitSettings s;
+  s.threads = threads;
+  Progress quiet(false);
+  const auto t0 = Clock::now();
+  const FitResult fit = run_fit(data, s, quiet);
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  if (print_models) {
+    fmt::print("{:<6} {:>12} {:>12} {:>7} {:>10} {:>10}\n", "order", "calls", "ln Z", "± err", "seconds", "calls/iter");
+    long total = 0;
+    for (const auto& m : fit.models) {
+      total += m.run.calls;
+      fmt::print("{:<6} {:>12} {:>12.2f} {:>7.2f} {:>10.2f} {:>10.1f}\n", m.order.name(), m.run.calls, m.run.log_z,
+                 m.run.log_z_error, m.seconds, static_cast<double>(m.run.calls) / static_cast<double>(m.run.iterations));
+    }
+    fmt::print("total likelihood calls: {}\n", total);
+  }
+  return wall;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string path = std::string(ADMITGEN_SAMPLES) + "/reference/q1s1_sigma0.01.csv";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    else path = argv[i];
+  }
+  const Measurement data = read_measurement(path, ReadOptions{});
+  likelihood_throughput(data);
+  fmt::print("\n## Q0-3 x S0-3 grid on {} (500 live points, Table 1 priors, seed 1)\n", path);
+  const double two = grid(data, 2, true);
+  fmt::print("grid wall time, 2 threads: {:.2f} s\n", two);
+  if (!quick) {
+    const double one = grid(data, 1, false);
+    fmt::print("grid wall time, 1 thread:  {:.2f} s  (speed-up {:.2f}x)\n", one, one / two);
+  }
+  return 0;
+}

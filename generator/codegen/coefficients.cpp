@@ -1,0 +1,197 @@
+#include "codegen/coefficients.hpp"
+
+#include "core/errors.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace admitgen::codegen {
+namespace {
+
+using i64 = std::int64_t;
+
+/// floor(v / 2^s) for s in [1, 62] (the runtime's rt_floor_shr).
+i64 floor_shr(i64 v, int s) { return v >= 0 ? (v >> s) : ~((~v) >> s); }
+
+/// old + prod/2^s rounded toward zero of the result (magnitude truncation), saturated to int32.
+std::int32_t add_tz(std::int32_t old, i64 prod, int s) {
+  const i64 q = floor_shr(prod, s);
+  i64 v = i64(old) + q;
+  const std::uint64_t mask = (std::uint64_t{1} << s) - 1;
+  if (v < 0 && (static_cast<std::uint64_t>(prod) & mask) != 0) v += 1;
+  return static_cast<std::int32_t>(std::clamp<i64>(v, INT32_MIN, INT32_MAX));
+}
+
+std::int32_t round_to_int(double v, int bits) {
+  const double r = std::nearbyint(v);
+  const double lim = std::ldexp(1.0, bits);
+  ADMITGEN_ENSURE(std::abs(r) < lim, "mantissa {} exceeds {} bits", r, bits);
+  return static_cast<std::int32_t>(r);
+}
+
+}  // namespace
+
+Format parse_format(const std::string& text) {
+  if (text == "f32") return Format::f32;
+  if (text == "q31") return Format::q31;
+  if (text == "q15") return Format::q15;
+  throw InputError(fmt::format("unknown format '{}' (expected f32, q31 or q15)", text));
+}
+
+const char* format_name(Format format) {
+  switch (format) {
+    case Format::f32: return "f32";
+    case Format::q31: return "q31";
+    case Format::q15: return "q15";
+  }
+  return "?";
+}
+
+FloatCoefficients to_float(const DiscreteModel& m) {
+  FloatCoefficients f;
+  for (double d : m.fir) f.fir.push_back(static_cast<float>(d));
+  for (const auto& r : m.real) f.real.push_back({static_cast<float>(r.eps), static_cast<float>(r.c)});
+  for (const auto& p : m.pair)
+    f.pair.push_back({static_cast<float>(p.e_r), static_cast<float>(p.p_i), static_cast<float>(p.g),
+                      static_cast<float>(2.0 * p.c.real()), static_cast<float>(-2.0 * p.c.imag())});
+  // h0 from the float values actually emitted, so y = h0·u + s holds for the float tables.
+  double h0 = f.fir.empty() ? 0.0 : f.fir[0];
+  for (const auto& r : f.real) h0 += double(r[0]) * double(r[1]);
+  for (const auto& p : f.pair) h0 += double(p[3]) * double(p[2]);
+  f.h0 = static_cast<float>(h0);
+  return f;
+}
+
+FixedCoefficients quantise(const DiscreteModel& m, Format format) {
+  ADMITGEN_ENSURE(format != Format::f32, "quantise() is for q31/q15");
+  FixedCoefficients q;
+  q.format = format;
+  q.bits = format == Format::q31 ? 31 : 15;
+  const int b = q.bits;
+  const double full = std::ldexp(1.0, b);
+
+  // Per-term exponents: the largest shift with the (sum of) mantissas inside 2^B (minus rounding room).
+  auto term_shift = [&](double magnitude_sum, int n) {
+    int s = -4;
+    while (s < 62 - b && magnitude_sum * std::ldexp(1.0, b + s + 1) <= full - n - 1) ++s;
+    return s;
+  };
+  for (const auto& r : m.real) {
+    FixedCoefficients::Real t{};
+    t.shift = term_shift(r.eps, 1);
+    ADMITGEN_ENSURE(t.shift >= 0, "eps {} must be below 1", r.eps);
+    t.eps = std::max<std::int32_t>(1, round_to_int(std::ldexp(r.eps, b + t.shift), b));
+    q.real.push_back(t);
+  }
+  for (const auto& p : m.pair) {
+    FixedCoefficients::Pair t{};
+    t.shift = term_shift(std::abs(p.e_r) + std::abs(p.p_i) + p.g, 3);
+    t.e_r = round_to_int(std::ldexp(p.e_r, b + t.shift), b);
+    t.p_i = round_to_int(std::ldexp(p.p_i, b + t.shift), b);
+    t.g = round_to_int(std::ldexp(p.g, b + t.shift), b);
+    q.pair.push_back(t);
+  }
+
+  // Output table: one exponent from the sum of magnitudes.
+  std::vector<double> out;
+  for (double d : m.fir) out.push_back(d);
+  for (const auto& r : m.real) out.push_back(r.c);
+  for (const auto& p : m.pair) {
+    out.push_back(2.0 * p.c.real());
+    out.push_back(-2.0 * p.c.imag());
+  }
+  double sum = 0.0;
+  for (double v : out) sum += std::abs(v);
+  const int n_out = static_cast<int>(out.size());
+  q.y_exp = -30;
+  while (sum * std::ldexp(1.0, b - q.y_exp) > full - n_out - 1) ++q.y_exp;
+  std::vector<std::int32_t> mant;
+  for (double v : out) mant.push_back(round_to_int(std::ldexp(v, b - q.y_exp), b));
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < m.fir.size(); ++k) q.fir.push_back(mant[j++]);
+  for (auto& r : q.real) r.c = mant[j++];
+  for (auto& p : q.pair) {
+    p.c_r = mant[j++];
+    p.c_i = mant[j++];
+  }
+
+  q.l1_norm = q.dequantised(m.fs_hz).l1_norm();
+  // 2^out_shift ≥ ‖h‖₁ (1 + 2^-10): the 2^-10 margin covers the state rounding (< 1 LSB per state).
+  q.out_shift = std::max(0, static_cast<int>(std::ceil(std::log2(q.l1_norm * (1.0 + 1.0 / 1024.0)))));
+  q.acc_shift = 31 + q.out_shift - q.y_exp;
+  ADMITGEN_ENSURE(q.acc_shift >= 1 && q.acc_shift <= 62, "output shift {} out of range", q.acc_shift);
+  return q;
+}
+
+DiscreteModel FixedCoefficients::dequantised(double fs_hz) const {
+  DiscreteModel d;
+  d.fs_hz = fs_hz;
+  const double ys = std::ldexp(1.0, y_exp - bits);
+  for (auto v : fir) d.fir.push_back(v * ys);
+  for (const auto& r : real) {
+    RealTerm t;
+    t.eps = std::ldexp(double(r.eps), -(bits + r.shift));
+    t.lambda = -std::log1p(-t.eps) * fs_hz;
+    t.c = r.c * ys;
+    d.real.push_back(t);
+  }
+  for (const auto& p : pair) {
+    PairTerm t;
+    const double s = std::ldexp(1.0, -(bits + p.shift));
+    t.e_r = p.e_r * s;
+    t.p_i = p.p_i * s;
+    t.g = p.g * s;
+    const double radius = std::hypot(1.0 + t.e_r, t.p_i);
+    t.alpha = -std::log(radius) * fs_hz;
+    t.beta = -std::atan2(t.p_i, 1.0 + t.e_r) * fs_hz;
+    t.c = {0.5 * p.c_r * ys, -0.5 * p.c_i * ys};
+    d.pair.push_back(t);
+  }
+  return d;
+}
+
+int FixedCoefficients::zero_decay_bound() const {
+  // |state_n| ≤ r^n · 2^31.5 (a pair's |ψ| ≤ √2 · 2^31); 0 once below 1 LSB.
+  const DiscreteModel d = dequantised(1.0);
+  double slowest = std::numeric_limits<double>::infinity();
+  for (const auto& r : d.real) slowest = std::min(slowest, -std::log1p(-r.eps));
+  for (const auto& p : d.pair) slowest = std::min(slowest, -std::log(std::hypot(1.0 + p.e_r, p.p_i)));
+  const double n = std::isinf(slowest) ? 0.0 : 31.5 * std::log(2.0) / slowest;
+  return static_cast<int>(std::ceil(n)) + static_cast<int>(fir.size()) + 1;
+}
+
+std::vector<std::int32_t> run_fixed(const FixedCoefficients& c, const std::vector<std::int32_t>& in) {
+  const int b = c.bits;
+  const bool q15 = c.format == Format::q15;
+  std::vector<std::int32_t> x(c.real.size(), 0), xi(c.pair.size(), 0), eta(c.pair.size(), 0);
+  std::vector<std::int32_t> hist(c.fir.size(), 0);  // hist[k] = u^{n-k}
+  std::vector<std::int32_t> y(in.size());
+  const i64 round = i64{1} << (c.acc_shift - 1);
+  const i64 lo = q15 ? INT16_MIN : INT32_MIN, hi = q15 ? INT16_MAX : INT32_MAX;
+  for (std::size_t n = 0; n < in.size(); ++n) {
+    const std::int32_t u = q15 ? in[n] * 65536 : in[n];
+    for (std::size_t k = hist.size(); k-- > 1;) hist[k] = hist[k - 1];
+    if (!hist.empty()) hist[0] = u;
+    i64 acc = 0;
+    for (std::size_t k = 0; k < hist.size(); ++k) acc += i64(c.fir[k]) * hist[k];
+    for (std::size_t q = 0; q < c.real.size(); ++q) {
+      const auto& t = c.real[q];
+      x[q] = add_tz(x[q], i64(t.eps) * (i64(u) - x[q]), b + t.shift);
+      acc += i64(t.c) * x[q];
+    }
+    for (std::size_t s = 0; s < c.pair.size(); ++s) {
+      const auto& t = c.pair[s];
+      const std::int32_t a = xi[s], e = eta[s];
+      xi[s] = add_tz(a, i64(t.e_r) * a - i64(t.p_i) * e + i64(t.g) * u, b + t.shift);
+      eta[s] = add_tz(e, i64(t.e_r) * e + i64(t.p_i) * a, b + t.shift);
+      acc += i64(t.c_r) * xi[s] + i64(t.c_i) * eta[s];
+    }
+    y[n] = static_cast<std::int32_t>(std::clamp<i64>(floor_shr(acc + round, c.acc_shift), lo, hi));
+  }
+  return y;
+}
+
+}  // namespace admitgen::codegen

@@ -1,0 +1,290 @@
+#include "codegen/discrete_model.hpp"
+
+#include "core/errors.hpp"
+#include "model/multipole.hpp"
+
+#include <Eigen/QR>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace admitgen::codegen {
+namespace {
+
+using cplx = std::complex<double>;
+constexpr double kPi = 3.14159265358979323846;
+/// Weight of the baseband points outside the data relative to the data points: small enough not to
+/// cost accuracy at the data (1e-5 leaves the in-band error within 2x of the unregularised fit),
+/// large enough to keep the response out of band near G (no wild FIR taps).
+constexpr double kOutOfBandWeight = 1e-5;
+/// A refit whose coefficients sum (in magnitude) beyond this multiple of max|G| is rejected: it trades
+/// FIR taps against a fast pole's near-FIR response (ill-conditioned) and would waste fixed-point range.
+constexpr double kMaxCoefficientGrowth = 16.0;
+
+/// 1 − e^{−jθ} without cancellation: 2 sin²(θ/2) + j sin θ.
+cplx one_minus_unit(double theta) {
+  const double s = std::sin(0.5 * theta);
+  return {2.0 * s * s, std::sin(theta)};
+}
+
+/// 1/(1 − z e^{−jθ}) for a pole z = 1 + δ (δ = z − 1 given accurately).
+cplx resolvent(cplx delta, double theta) {
+  const cplx e = std::polar(1.0, -theta);
+  return 1.0 / (one_minus_unit(theta) - delta * e);
+}
+
+/// PLRC (Kelley–Luebbers; FOH) numerator of K/(a + s) at period T (physics.md §1.2):
+/// χ = (1 − e^{−aT})/a, ξ = (1 − (1 + aT)e^{−aT})/(a²T), b0 = K(χ − ξ), b1 = Kξ.
+/// Series for small |aT| (the closed forms cancel catastrophically there).
+void plrc_numerator(cplx k, cplx a, double t, cplx& b0, cplx& b1) {
+  const cplx x = a * t;
+  cplx chi_t, xi_t;  // χ/T and ξ/T
+  if (std::abs(x) < 0.1) {
+    // (1 − e^{−x})/x = Σ (−x)^n/(n+1)!,  (1 − (1 + x)e^{−x})/x² = Σ (−x)^n (n+1)/(n+2)!
+    cplx pow = 1.0;
+    double fact = 1.0;  // (n+1)!
+    chi_t = 0.0;
+    xi_t = 0.0;
+    for (int n = 0; n < 12; ++n) {
+      chi_t += pow / fact;
+      xi_t += pow * double(n + 1) / (fact * double(n + 2));
+      pow *= -x;
+      fact *= double(n + 2);
+    }
+  } else {
+    const cplx ex = std::exp(-x);
+    chi_t = (1.0 - ex) / x;
+    xi_t = (1.0 - (1.0 + x) * ex) / (x * x);
+  }
+  b0 = k * t * (chi_t - xi_t);
+  b1 = k * t * xi_t;
+}
+
+struct Pole {
+  bool is_pair;
+  int index;       // q or s
+  cplx rate;       // λ or α + jβ
+};
+
+}  // namespace
+
+double DiscreteModel::h0() const {
+  double h = fir.empty() ? 0.0 : fir[0];
+  for (const auto& r : real) h += r.c * r.eps;
+  for (const auto& p : pair) h += 2.0 * p.c.real() * p.g;
+  return h;
+}
+
+cplx DiscreteModel::response(double f_hz) const {
+  const double theta = 2.0 * kPi * f_hz / fs_hz;
+  cplx h = 0.0;
+  for (std::size_t k = 0; k < fir.size(); ++k) h += fir[k] * std::polar(1.0, -double(k) * theta);
+  for (const auto& r : real) h += r.c * r.eps * resolvent(-r.eps, theta);
+  for (const auto& p : pair) {
+    const cplx delta(p.e_r, p.p_i);
+    h += p.c * p.g * resolvent(delta, theta) + std::conj(p.c) * p.g * resolvent(std::conj(delta), theta);
+  }
+  return h;
+}
+
+std::vector<double> DiscreteModel::filter(const std::vector<double>& u) const {
+  std::vector<double> y(u.size());
+  std::vector<double> x(real.size(), 0.0), xi(pair.size(), 0.0), eta(pair.size(), 0.0);
+  for (std::size_t n = 0; n < u.size(); ++n) {
+    double acc = 0.0;
+    for (std::size_t k = 0; k < fir.size() && k <= n; ++k) acc += fir[k] * u[n - k];
+    for (std::size_t q = 0; q < real.size(); ++q) {
+      x[q] += real[q].eps * (u[n] - x[q]);
+      acc += real[q].c * x[q];
+    }
+    for (std::size_t s = 0; s < pair.size(); ++s) {
+      const auto& p = pair[s];
+      const double a = xi[s], b = eta[s];
+      xi[s] = a + (p.e_r * a - p.p_i * b + p.g * u[n]);
+      eta[s] = b + (p.e_r * b + p.p_i * a);
+      acc += 2.0 * (p.c.real() * xi[s] - p.c.imag() * eta[s]);
+    }
+    y[n] = acc;
+  }
+  return y;
+}
+
+std::vector<double> DiscreteModel::impulse_response(int n) const {
+  std::vector<double> u(static_cast<std::size_t>(n), 0.0);
+  if (n > 0) u[0] = 1.0;
+  return filter(u);
+}
+
+int DiscreteModel::tail_samples(double decades) const {
+  double slowest = 1e300;  // decay per sample (nepers)
+  for (const auto& r : real) slowest = std::min(slowest, -std::log1p(-r.eps));
+  for (const auto& p : pair) slowest = std::min(slowest, -std::log1p(-p.g));
+  const double n = slowest >= 1e300 ? 0.0 : decades * std::log(10.0) / slowest;
+  return static_cast<int>(std::min(n, double(1 << 26))) + static_cast<int>(fir.size()) + 1;
+}
+
+double DiscreteModel::l1_norm() const {
+  const auto h = impulse_response(tail_samples(12.0));
+  double s = 0.0;
+  for (double v : h) s += std::abs(v);
+  return s;
+}
+
+DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
+                         const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
+  ADMITGEN_ENSURE(theta.size() == order.dim(), "theta has {} entries for {}", theta.size(), order.name());
+  if (!(fs_hz > 0.0) || !std::isfinite(fs_hz)) throw InputError(fmt::format("sample rate {} Hz is not positive", fs_hz));
+  if (data_f_hz.empty()) throw InputError("the fit lists no data frequencies to refit at");
+  const double f_top = *std::max_element(data_f_hz.begin(), data_f_hz.end());
+  if (f_top >= 0.45 * fs_hz)
+    throw InputError(fmt::format("--fs {:g} Hz: the fit's data reach {:g} Hz, beyond 0.45 fs = {:g} Hz; a discrete "
+                                 "filter at this rate cannot reproduce them (use fs > {:g} Hz)",
+                                 fs_hz, f_top, 0.45 * fs_hz, f_top / 0.45));
+  const double t = 1.0 / fs_hz;
+  const double fold_rate = 2.0 * kPi * options.fold_factor * fs_hz;
+
+  DiscreteModel m;
+  m.fs_hz = fs_hz;
+  for (int q = 0; q < order.q(); ++q) {
+    const double lam = theta[Order::lambda(q)];
+    ADMITGEN_ENSURE(lam > 0.0, "lambda_{} = {} is not causal", q + 1, lam);
+    if (lam > fold_rate) {
+      m.folded.push_back(fmt::format("lambda_{} = {:.6g} 1/s", q + 1, lam));
+      continue;
+    }
+    RealTerm r;
+    r.lambda = lam;
+    r.eps = -std::expm1(-lam * t);
+    m.real.push_back(r);
+  }
+  for (int s = 0; s < order.s(); ++s) {
+    const double al = theta[order.alpha(s)], be = theta[order.beta(s)];
+    ADMITGEN_ENSURE(al > 0.0, "alpha_{} = {} is not causal", s + 1, al);
+    if (al > fold_rate) {
+      m.folded.push_back(fmt::format("alpha_{} = {:.6g} 1/s (beta {:.6g})", s + 1, al, be));
+      continue;
+    }
+    PairTerm p;
+    p.alpha = al;
+    p.beta = be;
+    const double em1 = std::expm1(-al * t), r = std::exp(-al * t), sh = std::sin(0.5 * be * t);
+    p.e_r = em1 * std::cos(be * t) - 2.0 * sh * sh;
+    p.p_i = -r * std::sin(be * t);
+    p.g = -em1;
+    m.pair.push_back(p);
+  }
+
+  // Target: the continuous model at the data frequencies (weight 1/|G|: relative error) plus a sparse
+  // baseband grid outside the data (weight kOutOfBandWeight/|G|) that keeps the refit sane where there are no data.
+  std::vector<double> f = data_f_hz;
+  std::vector<double> w(f.size(), 1.0);
+  const double f_lo = *std::min_element(data_f_hz.begin(), data_f_hz.end());
+  for (int i = 0; i < 48; ++i) {
+    const double fi = 1e-4 * fs_hz * std::pow(0.45 / 1e-4, i / 47.0);
+    if (fi < f_lo || fi > f_top) {
+      f.push_back(fi);
+      w.push_back(kOutOfBandWeight);
+    }
+  }
+  Eigen::ArrayXd omega(static_cast<Eigen::Index>(f.size()));
+  for (std::size_t i = 0; i < f.size(); ++i) omega[static_cast<Eigen::Index>(i)] = 2.0 * kPi * f[i];
+  const Eigen::ArrayXcd g = evaluate_multipole(order, theta, omega);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const double mag = std::abs(g[static_cast<Eigen::Index>(i)]);
+    w[i] /= std::max(mag, 1e-12);
+  }
+  const std::size_t n_data = data_f_hz.size();
+
+  // Plain PLRC, for the record: G∞ + Σ (b0 + b1 z^{-1})/(1 − z_a z^{-1}) (+ conjugate for pairs).
+  {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < n_data; ++i) {
+      const double th = omega[static_cast<Eigen::Index>(i)] * t;
+      cplx h = theta[Order::g_inf()];
+      auto add = [&](cplx k, cplx a, bool conj_too) {
+        cplx b0, b1;
+        plrc_numerator(k, a, t, b0, b1);
+        const cplx za = std::exp(-a * t);
+        const cplx e = std::polar(1.0, -th), ep = std::polar(1.0, th);
+        const cplx term = (b0 + b1 * e) / (1.0 - za * e);
+        h += term;
+        if (conj_too) h += std::conj((b0 + b1 * ep) / (1.0 - za * ep));
+      };
+      for (int q = 0; q < order.q(); ++q) add(theta[Order::a(q)], theta[Order::lambda(q)], false);
+      for (int s = 0; s < order.s(); ++s)
+        add(cplx(theta[order.b(s)], theta[order.c(s)]), cplx(theta[order.alpha(s)], theta[order.beta(s)]), true);
+      const cplx gi = g[static_cast<Eigen::Index>(i)];
+      worst = std::max(worst, std::abs(h - gi) / std::abs(gi));
+    }
+    m.plrc_max_rel_error = worst;
+  }
+
+  // Weighted linear least squares for [d_0..d_{L-1}, c_q, (c_r, c_i)_s]; stacked real/imaginary rows.
+  const int n_terms = static_cast<int>(m.real.size() + 2 * m.pair.size());
+  auto fit_with = [&](int taps, DiscreteModel& out) {
+    const int cols = taps + n_terms;
+    const Eigen::Index rows = static_cast<Eigen::Index>(2 * f.size());
+    Eigen::MatrixXd a(rows, cols);
+    Eigen::VectorXd b(rows);
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const double th = omega[static_cast<Eigen::Index>(i)] * t;
+      std::vector<cplx> phi;
+      for (int k = 0; k < taps; ++k) phi.push_back(std::polar(1.0, -double(k) * th));
+      for (const auto& r : out.real) phi.push_back(r.eps * resolvent(-r.eps, th));
+      for (const auto& p : out.pair) {
+        const cplx d(p.e_r, p.p_i);
+        const cplx u1 = p.g * resolvent(d, th), u2 = p.g * resolvent(std::conj(d), th);
+        phi.push_back(u1 + u2);
+        phi.push_back(cplx(0.0, 1.0) * (u1 - u2));
+      }
+      const Eigen::Index r0 = static_cast<Eigen::Index>(2 * i);
+      for (int j = 0; j < cols; ++j) {
+        a(r0, j) = w[i] * phi[static_cast<std::size_t>(j)].real();
+        a(r0 + 1, j) = w[i] * phi[static_cast<std::size_t>(j)].imag();
+      }
+      b[r0] = w[i] * g[static_cast<Eigen::Index>(i)].real();
+      b[r0 + 1] = w[i] * g[static_cast<Eigen::Index>(i)].imag();
+    }
+    const Eigen::VectorXd scale = a.colwise().norm().transpose().cwiseMax(1e-300);
+    const Eigen::VectorXd x = (a * scale.cwiseInverse().asDiagonal()).colPivHouseholderQr().solve(b).cwiseQuotient(scale);
+    out.fir.assign(x.data(), x.data() + taps);
+    int j = taps;
+    for (auto& r : out.real) r.c = x[j++];
+    for (auto& p : out.pair) {
+      p.c = cplx(x[j], x[j + 1]);
+      j += 2;
+    }
+    double worst = 0.0;
+    for (std::size_t i = 0; i < n_data; ++i) {
+      const cplx gi = g[static_cast<Eigen::Index>(i)];
+      worst = std::max(worst, std::abs(out.response(f[i]) - gi) / std::abs(gi));
+    }
+    out.refit_max_rel_error = worst;
+  };
+
+  if (options.fir_taps > 0) {
+    fit_with(options.fir_taps, m);
+    return m;
+  }
+  double g_max = 1.0;
+  for (Eigen::Index i = 0; i < g.size(); ++i) g_max = std::max(g_max, std::abs(g[i]));
+  auto coefficient_sum = [](const DiscreteModel& d) {
+    double s = 0.0;
+    for (double v : d.fir) s += std::abs(v);
+    for (const auto& r : d.real) s += std::abs(r.c);
+    for (const auto& p : d.pair) s += 2.0 * std::abs(p.c);
+    return s;
+  };
+  DiscreteModel best;
+  for (int taps = 1; taps <= DiscretiseOptions::kMaxFirTaps; ++taps) {
+    DiscreteModel trial = m;
+    fit_with(taps, trial);
+    if (taps > 1 && coefficient_sum(trial) > kMaxCoefficientGrowth * g_max) continue;
+    if (taps == 1 || trial.refit_max_rel_error < 0.5 * best.refit_max_rel_error) best = trial;
+    if (best.refit_max_rel_error <= options.target_rel_error) break;
+  }
+  return best;
+}
+
+}  // namespace admitgen::codegen

@@ -1,0 +1,80 @@
+#include "physics/multipole_surface.hpp"
+
+#include "core/errors.hpp"
+#include "model/multipole.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <algorithm>
+
+namespace admitgen {
+namespace {
+
+int count_indexed(const std::map<std::string, double>& values, const std::string& prefix) {
+  int n = 0;
+  while (values.count(fmt::format("{}_{}", prefix, n + 1)) != 0) ++n;
+  return n;
+}
+
+const nlohmann::json& member(const nlohmann::json& j, const char* key, const std::string& origin) {
+  if (!j.is_object() || !j.contains(key)) throw InputError(fmt::format("{}: no '{}' member", origin, key));
+  return j.at(key);
+}
+
+}  // namespace
+
+MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context) {
+  const Order order(count_indexed(values, "A"), count_indexed(values, "B"));
+  const auto names = order.parameter_names();
+  Eigen::VectorXd theta(order.dim());
+  for (int i = 0; i < order.dim(); ++i) {
+    const auto it = values.find(names[static_cast<std::size_t>(i)]);
+    if (it == values.end())
+      throw InputError(fmt::format("{}: {} needs parameter '{}' (all of: {})", context, order.name(),
+                                   names[static_cast<std::size_t>(i)], fmt::join(names, ", ")));
+    theta[i] = it->second;
+  }
+  for (const auto& [name, value] : values)
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      throw InputError(fmt::format("{}: '{}' is not a parameter of {} (expected: {})", context, name, order.name(),
+                                   fmt::join(names, ", ")));
+  for (int q = 0; q < order.q(); ++q)
+    if (!(theta[Order::lambda(q)] > 0.0))
+      throw InputError(fmt::format("{}: lambda_{} must be positive (causality)", context, q + 1));
+  for (int s = 0; s < order.s(); ++s)
+    if (!(theta[order.alpha(s)] > 0.0))
+      throw InputError(fmt::format("{}: alpha_{} must be positive (causality)", context, s + 1));
+  return {order, theta};
+}
+
+MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string& order, Estimate estimate,
+                                    const std::string& origin) {
+  try {
+    const std::string selected = member(member(fit, "selected", origin), "order", origin).get<std::string>();
+    const nlohmann::json* parameters = &member(fit, "parameters", origin);
+    if (!order.empty() && Order::parse(order) != Order::parse(selected)) {
+      parameters = nullptr;
+      for (const auto& m : member(fit, "models", origin))
+        if (Order::parse(member(m, "order", origin).get<std::string>()) == Order::parse(order))
+          parameters = &member(m, "parameters", origin);
+      if (parameters == nullptr) throw InputError(fmt::format("{}: order {} was not fitted", origin, order));
+    }
+    const char* field = estimate == Estimate::mean ? "mean" : "max_likelihood";
+    std::map<std::string, double> values;
+    for (const auto& p : *parameters) {
+      const double v = member(p, field, origin).get<double>();
+      values[member(p, "name", origin).get<std::string>()] = v;
+    }
+    return multipole_from_parameters(values, origin);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a usable fit.json ({})", origin, e.what()));
+  }
+}
+
+Eigen::ArrayXcd surface_admittance(const MultipoleSurface& surface, const Eigen::ArrayXd& f_hz) {
+  return evaluate_multipole(surface.order, surface.theta, 2.0 * EIGEN_PI * f_hz);
+}
+
+}  // namespace admitgen

@@ -1,0 +1,24 @@
+/// @file
+/// Measurement noise for synthetic data (contract.md): complex Gaussian of std σ, E|n|² = σ², i.e.
+/// σ²/2 on each of Re and Im, either the same at every frequency or heteroscedastic the way the
+/// two-microphone method amplifies noise (physics.md §5.1 l):
+///   σ_i = σ √(1 + (scale/|sin k s|)²),  k = ω/c0, s the microphone spacing.
+/// Draws come from core/rng.hpp's Rng (Box-Muller), Re then Im, point by point in the order given,
+/// so a seed fixes every bit of the result.
+#pragma once
+
+#include "core/rng.hpp"
+#include "physics/air.hpp"
+
+#include <Eigen/Core>
+
+namespace admitgen {
+
+/// n_i = σ_i (g_1 + j g_2)/√2 with g standard normal. σ_i ≥ 0 and finite (ENSURE).
+Eigen::ArrayXcd complex_gaussian_noise(const Eigen::ArrayXd& std_per_point, Rng& rng);
+
+/// σ_i of the heteroscedastic form. Throws InputError if a frequency sits where sin ks = 0.
+Eigen::ArrayXd heteroscedastic_std(double sigma, double scale, const Air& air, double spacing_m,
+                                   const Eigen::ArrayXd& f_hz);
+
+}  // namespace admitgen

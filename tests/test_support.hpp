@@ -1,0 +1,28 @@
+/// @file
+/// Helpers shared by the tests: paths to the built CLI and the bundled samples, running the CLI in a
+/// child process with captured output, and scratch directories.
+#pragma once
+
+#include <string>
+
+namespace admitgen::test {
+
+struct CommandResult {
+  int exit_code;
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `admitgen ARGS` (ARGS already shell-quoted where needed) and captures its output.
+CommandResult run_admitgen(const std::string& args);
+
+/// A fresh empty directory under the build tree's scratch area (removed first if present).
+std::string scratch_dir(const std::string& name);
+
+/// Path of a bundled sample, e.g. sample("reference/q1s1_sigma0.01.csv").
+std::string sample(const std::string& relative);
+
+/// Writes text to a file (test fixtures).
+void write_text(const std::string& path, const std::string& text);
+std::string read_text(const std::string& path);
+
+}  // namespace admitgen::test
