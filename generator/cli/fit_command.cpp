@@ -25,6 +25,7 @@ FitSettings to_settings(const FitOptions& o) {
   s.sampler.max_iterations = o.max_iterations;
   s.sampler.slices = o.slices;
   s.threads = o.threads;
+  s.missed_mode_retries = o.missed_mode_retries;
   s.rule = SelectionRule::parse(o.select);
   s.data_count = parse_data_count(o.likelihood_k);
   s.reduce_symmetry = !o.no_symmetry_reduction;
@@ -73,6 +74,9 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
   sub->add_option("--max-iterations", opt->max_iterations, "Iteration cap per order (safety net)")
       ->check(CLI::Range(1L, 100'000'000L))->capture_default_str();
   sub->add_option("--slices", opt->slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
+  sub->add_option("--missed-mode-retries", opt->missed_mode_retries,
+                  "Re-run orders whose best likelihood is below a nested order's, doubling --live each round")
+      ->check(CLI::Range(0, 6))->capture_default_str();
   sub->add_flag("--no-symmetry-reduction", opt->no_symmetry_reduction,
                 "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
   sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
@@ -94,6 +98,7 @@ int run_fit_command(const FitOptions& o) {
   write_file_atomically(path, fit_to_json(data, read, settings, fit).dump(2) + "\n");
   if (!o.quiet) {
     print_summary(fit);
+    for (const auto& w : fit.warnings) fmt::print(stderr, "warning: {}\n", w);
     fmt::print("selected {} ({}); wrote {}\n", fit.models[fit.selected].order.name(), settings.rule.describe(), path);
   }
   return 0;

@@ -27,6 +27,7 @@ struct FitOptions {
   double dlogz = 0.01;
   long max_iterations = 1'000'000;
   int slices = 0;
+  int missed_mode_retries = 2;
   bool no_symmetry_reduction = false;
   bool quiet = false;
 };

@@ -58,6 +58,7 @@ Json settings_json(const FitSettings& s, std::size_t n_points) {
               {"sampler", {{"method", "nested sampling, slice steps along whitened random directions"},
                            {"dlogz", s.sampler.dlogz},
                            {"max_iterations", s.sampler.max_iterations},
+                           {"missed_mode_retries", s.missed_mode_retries},
                            {"slices", s.sampler.slices > 0 ? Json(s.sampler.slices) : Json("3 + dim")}}}};
 }
 
@@ -65,6 +66,7 @@ Json model_json(const ModelResult& m) {
   return Json{{"order", m.order.name()},
               {"Q", m.order.q()},
               {"S", m.order.s()},
+              {"live", m.live},
               {"log_evidence", m.run.log_z},
               {"log_evidence_error", m.run.log_z_error},
               {"max_log_likelihood", m.run.max_log_likelihood},
@@ -105,7 +107,8 @@ Json fit_to_json(const Measurement& data, const ReadOptions& read, const FitSett
               {"bayes_factor_errors_deciban", errors},
               {"selected", {{"order", chosen.order.name()}, {"rule", settings.rule.describe()}}},
               {"parameters", to_json(chosen.parameters)},
-              {"predictive", predictive_json(fit.predictive)}};
+              {"predictive", predictive_json(fit.predictive)},
+              {"warnings", fit.warnings}};
 }
 
 }  // namespace admitgen

@@ -19,16 +19,18 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 }
 
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress) {
+                      const NestedProgressFn& progress, int round) {
   const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
   const Likelihood likelihood(data, order, settings.data_count);
   NestedSettings sampler = settings.sampler;
-  sampler.seed = order_seed(settings.sampler.seed, order);
+  sampler.seed = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
+  sampler.live = settings.sampler.live << round;
   const auto start = std::chrono::steady_clock::now();
-  ModelResult result{order, run_nested_sampling(
-                                order.dim(), [&](const double* u, double* th) { transform(u, th); },
-                                [&](const double* th) { return likelihood(th); }, sampler, progress),
-                     0.0, {}};
+  ModelResult result{order,
+                     run_nested_sampling(
+                         order.dim(), [&](const double* u, double* th) { transform(u, th); },
+                         [&](const double* th) { return likelihood(th); }, sampler, progress),
+                     sampler.live, 0.0, {}};
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 0; i < result.run.size(); ++i)
       fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
@@ -103,35 +105,55 @@ class GridProgress {
   std::map<std::string, std::string> active_;
 };
 
-void check_constrainable(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid) {
+/// The largest order of the grid (Q = qmax, S = smax) must have fewer parameters than real data.
+void check_constrainable(const Measurement& data, const FitSettings& settings) {
+  const Order largest(settings.qmax, settings.smax);
   const int k = static_cast<int>(settings.data_count == DataCount::two_per_point ? 2 * data.size() : data.size());
-  for (const Order& o : grid)
-    if (k < o.dim() + 2)
-      throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
-                                   "--qmax/--smax or supply more frequency points",
-                                   o.name(), o.dim(), k));
+  if (k < largest.dim() + 2)
+    throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
+                                 "--qmax/--smax or supply more frequency points",
+                                 largest.name(), largest.dim(), k));
 }
 
 }  // namespace
 
-FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress) {
-  const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
-  check_constrainable(data, settings, grid);
-  // Largest orders first so that the two workers finish together.
-  std::vector<std::size_t> queue(grid.size());
-  std::iota(queue.begin(), queue.end(), std::size_t{0});
-  std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
+std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance) {
+  std::vector<std::string> warnings;
+  for (const auto& big : models) {
+    const ModelResult* worst = nullptr;
+    for (const auto& small : models) {
+      const bool contained = small.order != big.order && small.order.q() <= big.order.q() && small.order.s() <= big.order.s();
+      if (contained && small.run.max_log_likelihood > big.run.max_log_likelihood + tolerance &&
+          (worst == nullptr || small.run.max_log_likelihood > worst->run.max_log_likelihood))
+        worst = &small;
+    }
+    if (worst != nullptr)
+      warnings.push_back(fmt::format(
+          "{}: best ln L {:.1f} is below {:.1f} of the nested order {}; the sampler missed a mode of {}, whose ln Z is "
+          "underestimated (rerun with more --live points)",
+          big.order.name(), big.run.max_log_likelihood, worst->run.max_log_likelihood, worst->order.name(),
+          big.order.name()));
+  }
+  return warnings;
+}
 
-  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0.0, {}});
+namespace {
+
+/// Runs the orders grid[i] for i in `which` on a pool of workers, largest first, writing results[i].
+void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
+                const std::vector<std::size_t>& which, int round, std::vector<ModelResult>& results,
+                Progress& progress) {
+  std::vector<std::size_t> queue = which;
+  std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  GridProgress status(progress, grid.size());
+  GridProgress status(progress, queue.size());
   const auto worker = [&] {
     for (std::size_t k; (k = next.fetch_add(1)) < queue.size();) {
       const Order& order = grid[queue[k]];
       try {
-        results[queue[k]] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); });
+        results[queue[k]] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); }, round);
         status.done(results[queue[k]]);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
@@ -140,13 +162,40 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
     }
   };
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min<std::size_t>(grid.size(), settings.threads > 0 ? static_cast<unsigned>(settings.threads) : hw);
+  const std::size_t threads =
+      std::min<std::size_t>(queue.size(), settings.threads > 0 ? static_cast<unsigned>(settings.threads) : hw);
   std::vector<std::thread> pool;
   for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
   progress.finish();
   if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace
+
+FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress) {
+  const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
+  check_constrainable(data, settings);
+  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
+  std::vector<std::size_t> which(grid.size());
+  std::iota(which.begin(), which.end(), std::size_t{0});
+  run_orders(data, settings, grid, which, 0, results, progress);
+  for (int round = 1; round <= settings.missed_mode_retries; ++round) {
+    which.clear();
+    for (const auto& w : missed_mode_warnings(results))
+      for (std::size_t i = 0; i < grid.size(); ++i)
+        if (w.rfind(grid[i].name() + ":", 0) == 0) which.push_back(i);
+    if (which.empty()) break;
+    progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
+                                 settings.sampler.live << round));
+    std::vector<ModelResult> again = results;
+    run_orders(data, settings, grid, which, round, again, progress);
+    // Keep the re-run only where it reached a higher likelihood (it cannot be worse evidence-wise
+    // for a run that found the mode the first one missed).
+    for (std::size_t i : which)
+      if (again[i].run.max_log_likelihood > results[i].run.max_log_likelihood) results[i] = std::move(again[i]);
+  }
 
   FitResult fit;
   std::vector<double> log_z;
@@ -157,6 +206,7 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
   }
   fit.selected = settings.rule.select(log_z, buffers);
   fit.models = std::move(results);
+  fit.warnings = missed_mode_warnings(fit.models);
   constexpr int kPredictiveDraws = 1000;
   fit.predictive = predictive_band(data, fit.models[fit.selected], kPredictiveDraws,
                                    derive_seed(settings.sampler.seed, 0xbadULL));

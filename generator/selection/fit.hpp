@@ -30,11 +30,16 @@ struct FitSettings {
   DataCount data_count = DataCount::two_per_point;
   SelectionRule rule = SelectionRule::best();
   int threads = 0;  ///< 0 = hardware concurrency
+  /// Rounds of re-running orders flagged by missed_mode_warnings, each with twice the live points of
+  /// the previous round (a narrow mode with prior-volume fraction f at the contour where it starts to
+  /// dominate is found only if n·f ≳ 1, Skilling 2006 §8).
+  int missed_mode_retries = 2;
 };
 
 struct ModelResult {
   Order order;
   NestedRun run;
+  int live = 0;  ///< live points of this run (more than the setting if it was re-run)
   double seconds = 0.0;
   std::vector<ParameterSummary> parameters;  ///< folded to the reduced form
 };
@@ -52,14 +57,22 @@ struct FitResult {
   std::vector<ModelResult> models;  ///< grid order (Q-major)
   std::size_t selected = 0;
   PredictiveBand predictive;        ///< of the selected order
+  std::vector<std::string> warnings;  ///< e.g. missed modes (see missed_mode_warnings)
 };
+
+/// Order (Q', S') contains (Q, S) when Q' ≥ Q and S' ≥ S (zero residues reproduce the smaller
+/// model), so its best likelihood can never be lower. When a run's max ln L falls more than
+/// `tolerance` nats below that of an order it contains, that run missed the better mode: the
+/// evidence of that order is an underestimate. Returns one readable warning per such order.
+std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance = 2.0);
 
 /// Seed of the run for `order`, derived from the user seed (independent of grid and thread count).
 std::uint64_t order_seed(std::uint64_t user_seed, const Order& order);
 
-/// Runs one order: nested sampling plus folded summaries.
+/// Runs one order: nested sampling plus folded summaries. `round` > 0 re-runs with 2^round times the
+/// live points and its own seed stream.
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress = {});
+                      const NestedProgressFn& progress = {}, int round = 0);
 
 /// Runs the whole grid and selects. Throws InputError if the data cannot constrain the largest order.
 FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress);

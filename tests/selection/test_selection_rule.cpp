@@ -1,5 +1,6 @@
 // Selection rules and Bayes factors in deciban.
 #include "core/errors.hpp"
+#include "selection/fit.hpp"
 #include "selection/selection_rule.hpp"
 
 #include <doctest/doctest.h>
@@ -25,4 +26,19 @@ TEST_CASE("selection: best evidence vs cheapest within a margin (the paper's Q1S
   CHECK_THROWS_AS(SelectionRule::parse("cheapest:-1"), InputError);
   CHECK_THROWS_AS(SelectionRule::parse("cheapest"), InputError);
   CHECK_THROWS_AS(SelectionRule::parse("worst"), InputError);
+}
+
+TEST_CASE("missed-mode check: a containing order with a lower best likelihood is flagged") {
+  const auto model = [](int q, int s, double max_log_l) {
+    ModelResult m{Order(q, s), {}, 0, 0.0, {}};
+    m.run.max_log_likelihood = max_log_l;
+    return m;
+  };
+  // Q1S1 contains Q0S1 and Q1S0; Q0S2 contains Q0S1 only. Q1S1's 100 < Q0S1's 150: flagged.
+  const std::vector<ModelResult> models{model(0, 1, 150.0), model(1, 0, 90.0), model(1, 1, 100.0), model(0, 2, 149.0)};
+  const auto w = missed_mode_warnings(models, 2.0);
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].rfind("Q1S1:", 0) == 0);
+  CHECK(w[0].find("Q0S1") != std::string::npos);
+  CHECK(missed_mode_warnings(models, 60.0).empty());
 }
