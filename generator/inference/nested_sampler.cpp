@@ -40,7 +40,7 @@ struct EvidenceAccumulator {
 }  // namespace
 
 NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, const LogLikelihoodFn& log_likelihood,
-                              const NestedSettings& settings, const NestedProgressFn& progress) {
+                              const NestedSettings& settings, const NestedProgressFn& progress, const FoldFn& fold) {
   ADMITGEN_ENSURE(dim >= 1, "dimension {}", dim);
   ADMITGEN_ENSURE(settings.live >= 2, "live points {}", settings.live);
   const int n = settings.live;
@@ -54,6 +54,7 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
   Eigen::VectorXd live_log_l(n);
   for (int i = 0; i < n; ++i) {
     for (int k = 0; k < dim; ++k) live_u(k, i) = rng.uniform();
+    if (fold) fold(live_u.col(i).data());
     prior_transform(live_u.col(i).data(), live_theta.col(i).data());
     live_log_l[i] = log_likelihood(live_theta.col(i).data());
     ++run.calls;
@@ -100,6 +101,10 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
     double log_l = live_log_l[start];
     step.set_axes(clusters.axes[static_cast<std::size_t>(cluster)]);
     run.calls += step.move(u, theta, log_l, log_l_min, slices, rng);
+    if (fold) {
+      fold(u.data());
+      prior_transform(u.data(), theta.data());  // same ln L: the likelihood is invariant
+    }
     clusters.label[static_cast<std::size_t>(worst)] = cluster;
     live_u.col(worst) = u;
     live_theta.col(worst) = theta;

@@ -53,9 +53,14 @@ struct NestedRun {
 using PriorTransformFn = std::function<void(const double* u, double* theta)>;
 using LogLikelihoodFn = std::function<double(const double* theta)>;
 using NestedProgressFn = std::function<void(const NestedStatus&)>;
+/// Optional symmetry fold: maps u in place to its canonical copy, for a likelihood invariant under
+/// the corresponding group (see inference/priors.hpp). Chains then move in the full cube and every
+/// accepted point is folded back.
+using FoldFn = std::function<void(double* u)>;
 
 /// Runs nested sampling to completion. Deterministic for a given seed (single-threaded).
 NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, const LogLikelihoodFn& log_likelihood,
-                              const NestedSettings& settings, const NestedProgressFn& progress = {});
+                              const NestedSettings& settings, const NestedProgressFn& progress = {},
+                              const FoldFn& fold = {});
 
 }  // namespace admitgen

@@ -17,16 +17,6 @@ constexpr std::pair<Family, const char*> kFamilyKeys[] = {
     {Family::g_inf, "G_inf"}, {Family::a, "A"},         {Family::lambda, "lambda"}, {Family::b, "B"},
     {Family::c, "C"},         {Family::alpha, "alpha"}, {Family::beta, "beta"}};
 
-/// Fills x[0..n) with n sorted uniforms on [0,1), ascending, from n independent uniforms u
-/// (order-statistics transform; the top one is the max of n uniforms, u^{1/n}).
-void sorted_uniforms(const double* u, int n, double* x) {
-  double top = 1.0;
-  for (int k = n; k >= 1; --k) {
-    top *= std::pow(u[k - 1], 1.0 / k);
-    x[k - 1] = top;
-  }
-}
-
 }  // namespace
 
 const Range& PriorRanges::of(Family f) const { return const_cast<PriorRanges*>(this)->of(f); }
@@ -94,30 +84,41 @@ PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bo
 }
 
 void PriorTransform::operator()(const double* u, double* theta) const {
-  const auto scale = [](const Range& r, double x) { return r.lo + r.width() * x; };
-  theta[Order::g_inf()] = scale(ranges_.g_inf, u[Order::g_inf()]);
-  for (int q = 0; q < order_.q(); ++q) theta[Order::a(q)] = scale(ranges_.a, u[Order::a(q)]);
-  for (int s = 0; s < order_.s(); ++s) {
-    theta[order_.b(s)] = scale(ranges_.b, u[order_.b(s)]);
-    theta[order_.c(s)] = scale(ranges_.c, u[order_.c(s)]);
+  const auto families = order_.families();
+  for (std::size_t k = 0; k < families.size(); ++k) {
+    const Range& r = ranges_.of(families[k]);
+    theta[k] = r.lo + r.width() * u[k];
   }
-  if (!reduced_) {
-    for (int q = 0; q < order_.q(); ++q) theta[Order::lambda(q)] = scale(ranges_.lambda, u[Order::lambda(q)]);
-    for (int s = 0; s < order_.s(); ++s) {
-      theta[order_.alpha(s)] = scale(ranges_.alpha, u[order_.alpha(s)]);
-      theta[order_.beta(s)] = scale(ranges_.beta, u[order_.beta(s)]);
+}
+
+void PriorTransform::fold(double* u) const {
+  if (!reduced_) return;
+  // In u the symmetric β and C ranges make the sign flip u → 1 − u, and λ, β are monotone in u, so
+  // the θ-space fold carries over coordinate for coordinate.
+  for (int s = 0; s < order_.s(); ++s)
+    if (u[order_.beta(s)] < 0.5) {
+      u[order_.beta(s)] = 1.0 - u[order_.beta(s)];
+      u[order_.c(s)] = 1.0 - u[order_.c(s)];
     }
-    return;
-  }
-  double in[Order::kMaxPoles], x[Order::kMaxPoles];
-  for (int q = 0; q < order_.q(); ++q) in[q] = u[Order::lambda(q)];
-  sorted_uniforms(in, order_.q(), x);
-  for (int q = 0; q < order_.q(); ++q) theta[Order::lambda(q)] = scale(ranges_.lambda, x[q]);
-  for (int s = 0; s < order_.s(); ++s) in[s] = u[order_.alpha(s)];
-  sorted_uniforms(in, order_.s(), x);
+  // Pairs take their canonical labels by damping α (λ for real poles): a sharp and a broad
+  // resonance then keep their labels wherever their β lie, so each live-point cluster stays compact.
+  std::vector<std::array<double, 4>> pairs;  // (α, B, C, β) in u
+  for (int s = 0; s < order_.s(); ++s)
+    pairs.push_back({u[order_.alpha(s)], u[order_.b(s)], u[order_.c(s)], u[order_.beta(s)]});
+  std::sort(pairs.begin(), pairs.end());
   for (int s = 0; s < order_.s(); ++s) {
-    theta[order_.alpha(s)] = scale(ranges_.alpha, x[s]);
-    theta[order_.beta(s)] = ranges_.beta.hi * u[order_.beta(s)];  // |β| ~ U(0, hi)
+    const auto& p = pairs[static_cast<std::size_t>(s)];
+    u[order_.alpha(s)] = p[0];
+    u[order_.b(s)] = p[1];
+    u[order_.c(s)] = p[2];
+    u[order_.beta(s)] = p[3];
+  }
+  std::vector<std::pair<double, double>> poles;  // (λ, A) in u
+  for (int q = 0; q < order_.q(); ++q) poles.emplace_back(u[Order::lambda(q)], u[Order::a(q)]);
+  std::sort(poles.begin(), poles.end());
+  for (int q = 0; q < order_.q(); ++q) {
+    u[Order::lambda(q)] = poles[static_cast<std::size_t>(q)].first;
+    u[Order::a(q)] = poles[static_cast<std::size_t>(q)].second;
   }
 }
 

@@ -3,16 +3,17 @@
 /// nested sampling draws through, optionally in the symmetry-reduced space.
 ///
 /// Symmetry reduction: the likelihood is invariant under (β_s, C_s) → (−β_s, −C_s) for each pair and
-/// under any permutation of the real poles or of the pairs. The reduced space keeps one copy:
-/// λ_1 < … < λ_Q, α_1 < … < α_S and β_s ≥ 0. It holds 1/(Q! S! 2^S) of the prior mass and the
-/// reduced prior density is higher by exactly that factor, so Z = ∫ L π dθ is unchanged (L takes the
-/// same value on every copy). Any fundamental domain gives the same Z; pairs are labelled by their
-/// damping α rather than by β because a sharp and a broad resonance keep their labels when the broad
-/// one's β slides past the sharp one's (with β-sorting that move crosses the domain's seam and the
-/// sampler can lose the better mode: Q0S2 on the reference file). Reports fold samples to the
-/// contract's form (β ascending) afterwards with fold_to_reduced. The ordered values are drawn by the
-/// order-statistics transform x_n = u_n^{1/n}, x_k = x_{k+1} u_k^{1/k} (density n! on
-/// 0 ≤ x_1 ≤ … ≤ x_n ≤ 1).
+/// under any permutation of the real poles or of the pairs. The reduced space keeps one copy, the
+/// canonical domain λ_1 ≤ … ≤ λ_Q, α_1 ≤ … ≤ α_S, β_s ≥ 0 (reports re-sort pairs by β, the
+/// contract's form, with fold_to_reduced). It holds
+/// 1/(Q! S! 2^S) of the prior mass and its prior density is higher by that factor, so
+/// Z = ∫ L π dθ is unchanged (L takes the same value on every copy).
+/// The sampler reaches it by folding, not by a sorted transform: chains move in the full unit cube
+/// (where the likelihood has no seams) and every accepted point is folded to its canonical copy.
+/// Folding maps the uniform distribution on {L > L*} onto the uniform distribution on its canonical
+/// part, so nested sampling's volume statistics hold unchanged. (A sorted/order-statistics transform
+/// puts a seam where two poles would swap labels; chains cannot cross it and lose the better mode
+/// when a broad and a sharp pair must trade places: Q0S2 on the reference file, Q0S3 on Basotect.)
 #pragma once
 
 #include "model/order.hpp"
@@ -59,6 +60,9 @@ class PriorTransform {
   PriorTransform(const Order& order, const PriorRanges& ranges, bool reduce_symmetry);
 
   void operator()(const double* u, double* theta) const;
+  /// Maps u to the u of the canonical copy (identity when not reduced): β ≥ 0 (u → 1 − u on β and C,
+  /// whose ranges are symmetric), pairs by ascending α, real poles by ascending λ.
+  void fold(double* u) const;
   const Order& order() const { return order_; }
   bool reduced() const { return reduced_; }
 

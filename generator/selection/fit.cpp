@@ -29,7 +29,8 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
   ModelResult result{order,
                      run_nested_sampling(
                          order.dim(), [&](const double* u, double* th) { transform(u, th); },
-                         [&](const double* th) { return likelihood(th); }, sampler, progress),
+                         [&](const double* th) { return likelihood(th); }, sampler, progress,
+                         [&](double* u) { transform.fold(u); }),
                      sampler.live, 0.0, {}};
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 0; i < result.run.size(); ++i)

@@ -75,7 +75,8 @@ NestedRun sample(const Likelihood& like, const PriorTransform& t, int live, std:
   s.live = live;
   s.seed = seed;
   return run_nested_sampling(t.order().dim(), [&](const double* u, double* th) { t(u, th); },
-                             [&](const double* th) { return like(th); }, s);
+                             [&](const double* th) { return like(th); }, s, {},
+                             [&](double* u) { t.fold(u); });
 }
 
 }  // namespace

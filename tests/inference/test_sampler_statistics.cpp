@@ -23,7 +23,8 @@ NestedRun sample(const Measurement& data, const Order& o, bool reduced, int live
   s.live = live;
   s.seed = seed;
   return run_nested_sampling(o.dim(), [&](const double* u, double* th) { t(u, th); },
-                             [&](const double* th) { return like(th); }, s);
+                             [&](const double* th) { return like(th); }, s, {},
+                             [&](double* u) { t.fold(u); });
 }
 
 Measurement reference() { return read_measurement(test::sample("reference/q1s1_sigma0.01.csv"), ReadOptions{}); }
