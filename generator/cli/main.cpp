@@ -2,6 +2,8 @@
 /// admitgen command line: one options struct + setup + run function per subcommand (cli/*_command.*).
 /// Only this function maps errors to exit codes: 0 success, 1 a check found a violation, 2 bad input.
 #include "cli/fit_command.hpp"
+#include "cli/diagnose_command.hpp"
+#include "cli/emit_command.hpp"
 #include "cli/synth_command.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
@@ -18,7 +20,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   admitgen::cli::setup_fit_command(app, exit_code);
+  admitgen::cli::setup_emit_command(app, exit_code);
   admitgen::cli::setup_synth_command(app, exit_code);
+  admitgen::cli::setup_diagnose_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

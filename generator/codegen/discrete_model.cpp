@@ -133,6 +133,16 @@ double DiscreteModel::l1_norm() const {
 
 DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
                          const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
+  if (options.fold_factor <= 0.0) {
+    DiscreteModel best;
+    for (double factor : {4.0, 0.5, 0.25}) {
+      DiscretiseOptions o = options;
+      o.fold_factor = factor;
+      DiscreteModel m = discretise(order, theta, fs_hz, data_f_hz, o);
+      if (best.fs_hz == 0.0 || m.refit_max_rel_error < 0.5 * best.refit_max_rel_error) best = std::move(m);
+    }
+    return best;
+  }
   ADMITGEN_ENSURE(theta.size() == order.dim(), "theta has {} entries for {}", theta.size(), order.name());
   if (!(fs_hz > 0.0) || !std::isfinite(fs_hz)) throw InputError(fmt::format("sample rate {} Hz is not positive", fs_hz));
   if (data_f_hz.empty()) throw InputError("the fit lists no data frequencies to refit at");

@@ -1,0 +1,94 @@
+#include "cli/emit_command.hpp"
+
+#include "codegen/emission.hpp"
+#include "codegen/template_text.hpp"
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+
+#include <fmt/core.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace admitgen::cli {
+namespace {
+
+/// The output file's stem as a C identifier: "out/wall-48k.h" → "wall_48k".
+std::string default_name(const std::string& out) {
+  std::string s = std::filesystem::path(out).stem().string();
+  for (auto& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "admitgen_" + s;
+  return s;
+}
+
+nlohmann::json read_fit(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, 0, "cannot read the fit");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw FileError(path, 0, fmt::format("not JSON ({})", e.what()));
+  }
+}
+
+}  // namespace
+
+void setup_emit_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<EmitOptions>();
+  auto* sub = app.add_subcommand("emit", "Generate the causal C header (recursive convolution) of a fit for the C99 runtime");
+  sub->footer(
+      "Example:\n  admitgen emit out/fit.json --fs 48000 --fs 96000 --format q31 --name wall --out wall.h\n"
+      "The header holds one model per rate (exact poles, numerators refitted at the data frequencies for that\n"
+      "rate), the band absorption tables, and a machine-readable block for admitgen check.");
+  sub->add_option("fit", opt->fit, "fit.json written by admitgen fit")->required()->check(CLI::ExistingFile);
+  sub->add_option("--fs", opt->fs_hz, "Sample rate in Hz (repeatable; whole Hz)")->required();
+  sub->add_option("--format", opt->format, "Coefficient and data format")->required()->check(CLI::IsMember({"f32", "q31", "q15"}));
+  sub->add_option("--name", opt->name, "C identifier prefix of the emitted tables (default: output file stem)");
+  sub->add_option("--out,-o", opt->out, "Header to write")->required();
+  sub->add_option("--order", opt->order, "Emit this order of the fit (e.g. Q0S2) instead of the selected one");
+  sub->add_option("--estimate", opt->estimate, "Posterior summary used as the parameters")
+      ->check(CLI::IsMember({"mean", "max_likelihood"}))->capture_default_str();
+  sub->add_option("--fir-taps", opt->fir_taps, "FIR taps of the refit (0 = fewest reaching 1e-5 relative error)")
+      ->check(CLI::Range(0, 8))->capture_default_str();
+  sub->add_option("--bands-json", opt->bands_json, "Also write the band absorption (octave, 1/3 octave) as JSON");
+  sub->add_option("--golden", opt->golden, "Also write bit-exact golden vectors of the first rate (q31/q15)");
+  sub->add_option("--golden-seed", opt->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
+  sub->add_option("--templates", opt->templates, "Directory holding admitgen_boundary.h.in (default: installed/source)");
+  sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
+  sub->callback([opt, &exit_code] { exit_code = run_emit_command(*opt); });
+}
+
+int run_emit_command(const EmitOptions& o) {
+  codegen::EmitSettings s;
+  s.fs_hz = o.fs_hz;
+  s.format = codegen::parse_format(o.format);
+  s.name = o.name.empty() ? default_name(o.out) : o.name;
+  s.order = o.order;
+  s.estimate = o.estimate == "mean" ? Estimate::mean : Estimate::max_likelihood;
+  s.fir_taps = o.fir_taps;
+  if (!o.golden.empty() && s.format == codegen::Format::f32)
+    throw InputError("--golden needs --format q31 or q15 (f32 output is not bit-exact across compilers)");
+  const std::string tpl = codegen::load_template(o.templates, "admitgen_boundary.h.in");
+  const auto emission = codegen::prepare_emission(read_fit(o.fit), o.fit, s);
+  // Everything is computed before anything is written; each file appears whole or not at all.
+  const std::string header =
+      codegen::render_header(emission, tpl, std::filesystem::path(o.out).filename().string());
+  const std::string bands = o.bands_json.empty() ? "" : codegen::bands_json(emission).dump(2) + "\n";
+  const std::string golden = o.golden.empty() ? "" : codegen::golden_vectors(emission, o.golden_seed);
+  write_file_atomically(o.out, header);
+  if (!o.bands_json.empty()) write_file_atomically(o.bands_json, bands);
+  if (!o.golden.empty()) write_file_atomically(o.golden, golden);
+  if (!o.quiet) {
+    for (const auto& r : emission.rates)
+      fmt::print("{} Hz: {} FIR taps, {} real, {} pairs; refit max rel. error {:.2e} (plain PLRC {:.2e}){}\n", r.fs_hz,
+                 r.model.fir.size(), r.model.real.size(), r.model.pair.size(), r.model.refit_max_rel_error,
+                 r.model.plrc_max_rel_error, r.model.folded.empty() ? "" : "; folded " + std::to_string(r.model.folded.size()));
+    fmt::print("wrote {} ({} {}, {})\n", o.out, emission.surface.order.name(), o.format, s.name);
+  }
+  return 0;
+}
+
+}  // namespace admitgen::cli

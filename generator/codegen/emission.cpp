@@ -1,0 +1,432 @@
+#include "codegen/emission.hpp"
+
+#include "codegen/template_text.hpp"
+#include "core/errors.hpp"
+#include "core/rng.hpp"
+#include "core/version.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <set>
+
+namespace admitgen::codegen {
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kPi = 3.14159265358979323846;
+
+/// A C double literal that reads back to exactly `v` (shortest round-trip digits, always '.' or 'e').
+std::string dlit(double v) {
+  ADMITGEN_ENSURE(std::isfinite(v), "non-finite coefficient {}", v);
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+/// The same for float (shortest digits of the float, 'f' suffix).
+std::string flit(float v) {
+  ADMITGEN_ENSURE(std::isfinite(v), "non-finite coefficient {}", v);
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s + "f";
+}
+
+std::string join(const std::vector<std::string>& parts, const char* sep) {
+  std::string s;
+  for (const auto& p : parts) s += (s.empty() ? "" : sep) + p;
+  return s;
+}
+
+std::vector<double> data_frequencies(const nlohmann::json& fit, const std::string& origin) {
+  std::vector<double> f;
+  if (fit.contains("predictive") && fit["predictive"].contains("f_hz"))
+    for (const auto& v : fit["predictive"]["f_hz"]) f.push_back(v.get<double>());
+  if (!f.empty()) return f;
+  // Older fits: log-spaced points over the data range (what the refit needs is the band, not the grid).
+  if (!fit.contains("input")) throw InputError(fmt::format("{}: no 'input' member (data range)", origin));
+  const auto& in = fit["input"];
+  const double lo = in.at("f_min_hz").get<double>(), hi = in.at("f_max_hz").get<double>();
+  const int n = std::max(16, in.value("points", 200));
+  for (int i = 0; i < n; ++i) f.push_back(lo * std::pow(hi / lo, double(i) / (n - 1)));
+  return f;
+}
+
+std::string upper(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+TemplateContext item(std::map<std::string, std::string> values) { return TemplateContext{std::move(values), {}}; }
+
+/// One-item list when `empty` (C has no empty arrays: a zero pad entry), else no items.
+std::vector<TemplateContext> pad_if(bool empty) {
+  return empty ? std::vector<TemplateContext>{item({})} : std::vector<TemplateContext>{};
+}
+
+std::string real_note(const RealTerm& r, double fs) {
+  return fmt::format("lambda = {:.6g} 1/s ({:.6g} Hz), lambda T = {:.4g}", r.lambda, r.lambda / (2 * kPi), r.lambda / fs);
+}
+std::string pair_note(const PairTerm& p, double fs) {
+  return fmt::format("alpha = {:.6g}, beta = {:.6g} 1/s ({:.6g} Hz), alpha T = {:.4g}", p.alpha, p.beta,
+                     p.beta / (2 * kPi), p.alpha / fs);
+}
+
+/// Rows of the f32 / fixed / reference tables of one rate, as template lists.
+void table_lists(const EmittedRate& r, Format format, TemplateContext& c) {
+  const auto& m = r.model;
+  std::vector<TemplateContext> fir, real, pair, ref_fir, ref_real, ref_pair;
+  for (std::size_t k = 0; k < m.fir.size(); ++k) {
+    const std::string v = format == Format::f32 ? flit(r.f32.fir[k]) : std::to_string(r.fixed->fir[k]);
+    fir.push_back(item({{"v", v}, {"k", std::to_string(k)}}));
+    ref_fir.push_back(item({{"v", dlit(m.fir[k])}, {"k", std::to_string(k)}}));
+  }
+  for (std::size_t q = 0; q < m.real.size(); ++q) {
+    std::string v;
+    if (format == Format::f32) {
+      v = fmt::format("{}, {}", flit(r.f32.real[q][0]), flit(r.f32.real[q][1]));
+    } else {
+      const auto& t = r.fixed->real[q];
+      v = fmt::format("{}, {}, {}", t.eps, t.shift, t.c);
+    }
+    real.push_back(item({{"v", v}, {"note", real_note(m.real[q], r.fs_hz)}}));
+    ref_real.push_back(item({{"v", fmt::format("{}, {}", dlit(m.real[q].eps), dlit(m.real[q].c))}}));
+  }
+  for (std::size_t s = 0; s < m.pair.size(); ++s) {
+    std::string v;
+    if (format == Format::f32) {
+      const auto& p = r.f32.pair[s];
+      v = fmt::format("{}, {}, {}, {}, {}", flit(p[0]), flit(p[1]), flit(p[2]), flit(p[3]), flit(p[4]));
+    } else {
+      const auto& t = r.fixed->pair[s];
+      v = fmt::format("{}, {}, {}, {}, {}, {}", t.e_r, t.p_i, t.g, t.shift, t.c_r, t.c_i);
+    }
+    pair.push_back(item({{"v", v}, {"note", pair_note(m.pair[s], r.fs_hz)}}));
+    const auto& p = m.pair[s];
+    ref_pair.push_back(item({{"v", fmt::format("{}, {}, {}, {}, {}", dlit(p.e_r), dlit(p.p_i), dlit(p.g),
+                                               dlit(2.0 * p.c.real()), dlit(-2.0 * p.c.imag()))}}));
+  }
+  const std::size_t real_width = format == Format::f32 ? 2 : 3, pair_width = format == Format::f32 ? 5 : 6;
+  c.values["fir_len"] = std::to_string(std::max<std::size_t>(1, m.fir.size()));
+  c.values["real_len"] = std::to_string(std::max<std::size_t>(1, real_width * m.real.size()));
+  c.values["pair_len"] = std::to_string(std::max<std::size_t>(1, pair_width * m.pair.size()));
+  c.values["ref_real_len"] = std::to_string(std::max<std::size_t>(1, 2 * m.real.size()));
+  c.values["ref_pair_len"] = std::to_string(std::max<std::size_t>(1, 5 * m.pair.size()));
+  c.lists["fir"] = fir;
+  c.lists["real"] = real;
+  c.lists["pair"] = pair;
+  c.lists["ref_fir"] = ref_fir;
+  c.lists["ref_real"] = ref_real;
+  c.lists["ref_pair"] = ref_pair;
+  c.lists["pad_fir"] = pad_if(m.fir.empty());
+  c.lists["pad_real"] = pad_if(m.real.empty());
+  c.lists["pad_pair"] = pad_if(m.pair.empty());
+}
+
+TemplateContext rate_context(const EmittedRate& r, Format format) {
+  TemplateContext c;
+  const auto& m = r.model;
+  c.values["fs"] = std::to_string(r.fs_hz);
+  c.values["refit_err"] = fmt::format("{:.3g}", m.refit_max_rel_error);
+  c.values["plrc_err"] = fmt::format("{:.3g}", m.plrc_max_rel_error);
+  c.values["n_fir"] = std::to_string(m.fir.size());
+  c.values["n_real"] = std::to_string(m.real.size());
+  c.values["n_pair"] = std::to_string(m.pair.size());
+  c.values["folded"] = m.folded.empty() ? "none" : join(m.folded, "; ");
+  c.values["tail"] = std::to_string(m.tail_samples(6.0));
+  c.values["ref_h0"] = dlit(m.h0());
+  if (format == Format::f32) {
+    c.values["l1"] = fmt::format("{:.6g}", m.l1_norm());
+    c.values["model_scalars"] = flit(r.f32.h0);
+    c.lists["fixed_doc"] = {};
+  } else {
+    const auto& q = *r.fixed;
+    c.values["l1"] = fmt::format("{:.6g}", q.l1_norm);
+    c.values["model_scalars"] = fmt::format("{}, {}", q.out_shift, q.acc_shift);
+    c.lists["fixed_doc"] = {item({{"out_shift", std::to_string(q.out_shift)},
+                                  {"y_exp", std::to_string(q.y_exp)},
+                                  {"acc_shift", std::to_string(q.acc_shift)},
+                                  {"decay", std::to_string(q.zero_decay_bound())}})};
+  }
+  table_lists(r, format, c);
+  return c;
+}
+
+std::vector<TemplateContext> band_rows(const std::vector<BandAbsorption>& bands) {
+  std::vector<TemplateContext> rows;
+  for (const auto& b : bands)
+    rows.push_back(item({{"v", fmt::format("{}, {}, {}", flit(static_cast<float>(b.center_hz)),
+                                           flit(static_cast<float>(b.alpha_normal)),
+                                           flit(static_cast<float>(b.alpha_random)))},
+                         {"note", fmt::format("{:.0f}-{:.0f} Hz{}", b.lo_hz, b.hi_hz,
+                                              b.in_data ? "" : ", outside the data: model extrapolation")}}));
+  return rows;
+}
+
+Json coefficient_json(const EmittedRate& r, Format format) {
+  Json j;
+  if (format == Format::f32) {
+    Json real = Json::array(), pair = Json::array();
+    for (const auto& t : r.f32.real) real.push_back({double(t[0]), double(t[1])});
+    for (const auto& p : r.f32.pair) pair.push_back({double(p[0]), double(p[1]), double(p[2]), double(p[3]), double(p[4])});
+    j = {{"h0", double(r.f32.h0)}, {"fir", std::vector<double>(r.f32.fir.begin(), r.f32.fir.end())}, {"real", real}, {"pair", pair}};
+  } else {
+    const auto& q = *r.fixed;
+    Json real = Json::array(), pair = Json::array();
+    for (const auto& t : q.real) real.push_back({t.eps, t.shift, t.c});
+    for (const auto& p : q.pair) pair.push_back({p.e_r, p.p_i, p.g, p.shift, p.c_r, p.c_i});
+    j = {{"bits", q.bits}, {"out_shift", q.out_shift}, {"y_exp", q.y_exp}, {"acc_shift", q.acc_shift},
+         {"l1_norm", q.l1_norm}, {"zero_decay_bound", q.zero_decay_bound()}, {"fir", q.fir}, {"real", real}, {"pair", pair}};
+  }
+  return j;
+}
+
+Json double_json(const DiscreteModel& m) {
+  Json real = Json::array(), pair = Json::array();
+  for (const auto& t : m.real) real.push_back({t.eps, t.c});
+  for (const auto& p : m.pair) pair.push_back({p.e_r, p.p_i, p.g, 2.0 * p.c.real(), -2.0 * p.c.imag()});
+  return {{"fir", m.fir}, {"real", real}, {"pair", pair}};
+}
+
+/// Rebuilds the double model from the f32/double table layout {fir, real {eps, c}, pair {e_r, p_i, g, cr, ci}}.
+DiscreteModel model_from_tables(const Json& j, double fs) {
+  DiscreteModel m;
+  m.fs_hz = fs;
+  for (const auto& v : j.at("fir")) m.fir.push_back(v.get<double>());
+  for (const auto& v : j.at("real")) {
+    RealTerm t;
+    t.eps = v.at(0).get<double>();
+    t.c = v.at(1).get<double>();
+    t.lambda = -std::log1p(-t.eps) * fs;
+    m.real.push_back(t);
+  }
+  for (const auto& v : j.at("pair")) {
+    PairTerm t;
+    t.e_r = v.at(0).get<double>();
+    t.p_i = v.at(1).get<double>();
+    t.g = v.at(2).get<double>();
+    t.c = {0.5 * v.at(3).get<double>(), -0.5 * v.at(4).get<double>()};
+    t.alpha = -std::log(std::hypot(1.0 + t.e_r, t.p_i)) * fs;
+    t.beta = -std::atan2(t.p_i, 1.0 + t.e_r) * fs;
+    m.pair.push_back(t);
+  }
+  return m;
+}
+
+}  // namespace
+
+Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings) {
+  if (!std::regex_match(settings.name, std::regex("[A-Za-z_][A-Za-z0-9_]{0,63}")))
+    throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, '_'; not starting with a digit)",
+                                 settings.name));
+  if (settings.fs_hz.empty()) throw InputError("at least one --fs is required");
+  std::set<int> seen;
+  for (double fs : settings.fs_hz) {
+    if (!(fs >= 1000.0 && fs <= 1e6) || fs != std::floor(fs))
+      throw InputError(fmt::format("--fs {:g}: sample rates must be whole numbers of Hz in [1000, 1000000]", fs));
+    if (!seen.insert(static_cast<int>(fs)).second) throw InputError(fmt::format("--fs {:g} is given twice", fs));
+  }
+  Emission e;
+  e.settings = settings;
+  e.surface = multipole_from_fit(fit, settings.order, settings.estimate, fit_path);
+  try {
+    e.fit_version = fit.value("version", std::string("unknown"));
+    e.input_sha256 = fit.at("input").at("sha256").get<std::string>();
+    e.seed = fit.at("settings").at("seed").get<std::uint64_t>();
+    e.data_f_hz = data_frequencies(fit, fit_path);
+  } catch (const nlohmann::json::exception& ex) {
+    throw InputError(fmt::format("{}: not a usable fit.json ({})", fit_path, ex.what()));
+  }
+  const std::size_t slash = fit_path.find_last_of('/');
+  e.fit_name = slash == std::string::npos ? fit_path : fit_path.substr(slash + 1);
+  DiscretiseOptions options;
+  options.fir_taps = settings.fir_taps;
+  for (double fs : settings.fs_hz) {
+    EmittedRate r;
+    r.fs_hz = static_cast<int>(fs);
+    r.model = discretise(e.surface.order, e.surface.theta, fs, e.data_f_hz, options);
+    r.f32 = to_float(r.model);
+    if (settings.format != Format::f32) r.fixed = quantise(r.model, settings.format);
+    e.rates.push_back(std::move(r));
+  }
+  const auto [lo, hi] = std::minmax_element(e.data_f_hz.begin(), e.data_f_hz.end());
+  e.octave = band_absorption(e.surface.order, e.surface.theta, 1, *lo, *hi);
+  e.third_octave = band_absorption(e.surface.order, e.surface.theta, 3, *lo, *hi);
+  return e;
+}
+
+Json emission_json(const Emission& e) {
+  Json rates = Json::array();
+  for (const auto& r : e.rates) {
+    Json j{{"fs_hz", r.fs_hz},
+           {"method", "matched_exponential_refit"},
+           {"refit_max_rel_error", r.model.refit_max_rel_error},
+           {"plrc_max_rel_error", r.model.plrc_max_rel_error},
+           {"folded", r.model.folded},
+           {"double", double_json(r.model)}};
+    j[format_name(e.settings.format)] = coefficient_json(r, e.settings.format);
+    rates.push_back(j);
+  }
+  const auto names = e.surface.order.parameter_names();
+  return Json{{"schema", "admitgen.emit/1"},
+              {"version", kVersion},
+              {"abi", kRuntimeAbi},
+              {"name", e.settings.name},
+              {"format", format_name(e.settings.format)},
+              {"fit", {{"file", e.fit_name}, {"version", e.fit_version}, {"input_sha256", e.input_sha256}, {"seed", e.seed}}},
+              {"order", e.surface.order.name()},
+              {"estimate", e.settings.estimate == Estimate::mean ? "mean" : "max_likelihood"},
+              {"continuous", {{"names", names},
+                              {"theta", std::vector<double>(e.surface.theta.data(),
+                                                            e.surface.theta.data() + e.surface.theta.size())}}},
+              {"data_f_min_hz", *std::min_element(e.data_f_hz.begin(), e.data_f_hz.end())},
+              {"data_f_max_hz", *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end())},
+              {"rates", rates}};
+}
+
+std::string render_header(const Emission& e, const std::string& template_text, const std::string& file_name) {
+  TemplateContext c;
+  const auto& s = e.settings;
+  const std::string fmt_name = format_name(s.format);
+  std::vector<std::string> fs_args, rate_list;
+  for (const auto& r : e.rates) {
+    fs_args.push_back(fmt::format("--fs {}", r.fs_hz));
+    rate_list.push_back(std::to_string(r.fs_hz));
+  }
+  std::string extra;
+  if (!s.order.empty()) extra += " --order " + e.surface.order.name();
+  if (s.estimate == Estimate::max_likelihood) extra += " --estimate max_likelihood";
+  if (s.fir_taps > 0) extra += fmt::format(" --fir-taps {}", s.fir_taps);
+  c.values = {{"file", file_name},
+              {"version", kVersion},
+              {"fit_name", e.fit_name},
+              {"fs_args", join(fs_args, " ")},
+              {"format", fmt_name},
+              {"FORMAT", upper(fmt_name)},
+              {"name", s.name},
+              {"NAME", upper(s.name)},
+              {"extra_args", extra},
+              {"input_sha256", e.input_sha256},
+              {"order", e.surface.order.name()},
+              {"estimate", s.estimate == Estimate::mean ? "mean" : "maximum-likelihood point"},
+              {"seed", std::to_string(e.seed)},
+              {"fit_version", e.fit_version},
+              {"points", std::to_string(e.data_f_hz.size())},
+              {"f_min", fmt::format("{:g}", *std::min_element(e.data_f_hz.begin(), e.data_f_hz.end()))},
+              {"f_max", fmt::format("{:g}", *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end()))},
+              {"rate_list", join(rate_list, ", ")},
+              {"abi", std::to_string(kRuntimeAbi)},
+              {"ctype", s.format == Format::f32 ? "float" : s.format == Format::q31 ? "int32_t" : "int16_t"},
+              {"n_theta", std::to_string(e.surface.theta.size())},
+              {"n_octave", std::to_string(e.octave.size())},
+              {"n_third", std::to_string(e.third_octave.size())},
+              {"bits_doc", s.format == Format::q15 ? "15" : "31"},
+              {"order_q", std::to_string(e.surface.order.q())},
+              {"order_s", std::to_string(e.surface.order.s())}};
+  std::string json = emission_json(e).dump();
+  for (std::size_t p = 0; (p = json.find("*/", p)) != std::string::npos;) json.replace(p, 2, "*\\/");
+  c.values["model_json"] = json;
+  const auto names = e.surface.order.parameter_names();
+  for (Eigen::Index i = 0; i < e.surface.theta.size(); ++i)
+    c.lists["params"].push_back(item({{"pname", names[static_cast<std::size_t>(i)]}, {"pvalue", dlit(e.surface.theta[i])},
+                                      {"last", i + 1 == e.surface.theta.size() ? "" : ","}}));
+  for (const auto& r : e.rates) c.lists["rates"].push_back(rate_context(r, s.format));
+  c.lists["is_f32"] = pad_if(s.format == Format::f32);
+  c.lists["is_fixed"] = pad_if(s.format != Format::f32);
+  c.lists["octave"] = band_rows(e.octave);
+  c.lists["third"] = band_rows(e.third_octave);
+  return render_template(template_text, c);
+}
+
+Json bands_json(const Emission& e) {
+  auto rows = [](const std::vector<BandAbsorption>& bands) {
+    Json a = Json::array();
+    for (const auto& b : bands)
+      a.push_back({{"center_hz", b.center_hz}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"alpha_normal", b.alpha_normal},
+                   {"alpha_random", b.alpha_random}, {"in_data", b.in_data}});
+    return a;
+  };
+  return Json{{"schema", "admitgen.bands/1"},
+              {"version", kVersion},
+              {"name", e.settings.name},
+              {"order", e.surface.order.name()},
+              {"input_sha256", e.input_sha256},
+              {"method", "mean over 32 log-spaced frequencies per band; normal incidence 1-|R|^2, R=(1-G)/(1+G); "
+                         "random incidence: locally reacting, London/Kuttruff closed form"},
+              {"octave", rows(e.octave)},
+              {"third_octave", rows(e.third_octave)}};
+}
+
+std::string golden_vectors(const Emission& e, std::uint64_t seed) {
+  if (e.settings.format == Format::f32) throw InputError("--golden needs --format q31 or q15 (f32 is not bit-exact)");
+  const EmittedRate& r = e.rates.front();
+  const FixedCoefficients& q = *r.fixed;
+  const std::int32_t full = q.format == Format::q31 ? INT32_MAX : INT16_MAX;
+  std::vector<std::int32_t> in;
+  in.push_back(full);  // impulse
+  in.resize(256, 0);
+  const auto h = q.dequantised(r.fs_hz).impulse_response(256);
+  for (int n = 0; n < 256; ++n) in.push_back(h[static_cast<std::size_t>(255 - n)] >= 0.0 ? full : -full - 1);
+  Rng rng(seed);
+  for (int n = 0; n < 512; ++n)
+    in.push_back(static_cast<std::int32_t>(std::floor((rng.uniform() - 0.5) * (double(full) + 1.0))));
+  in.resize(in.size() + 256, 0);
+  const auto out = run_fixed(q, in);
+  std::string s = fmt::format(
+      "# admitgen golden vectors (bit-exact), format {}, fs {} Hz, model {} ({}), admitgen {}\n"
+      "# fit input sha256 {}, noise seed {}\n"
+      "# segments: [0,256) full-scale impulse; [256,512) full-scale worst-case sign of h; [512,1024) uniform noise "
+      "at -6 dBFS (admitgen::Rng xoshiro256** seed {}); [1024,1280) zeros\n"
+      "# count, then per sample: input output (decimal) # hex\n{}\n",
+      format_name(q.format), r.fs_hz, e.settings.name, e.surface.order.name(), kVersion, e.input_sha256, seed, seed,
+      in.size());
+  for (std::size_t n = 0; n < in.size(); ++n)
+    s += fmt::format("{} {} # {:08x} {:08x}\n", in[n], out[n], static_cast<std::uint32_t>(in[n]),
+                     static_cast<std::uint32_t>(out[n]));
+  return s;
+}
+
+EmittedHeader read_emitted_header(const std::string& text, const std::string& origin) {
+  const std::string begin = "admitgen:model", end = "admitgen:end";
+  const std::size_t b = text.find(begin), x = text.find(end);
+  if (b == std::string::npos || x == std::string::npos || x < b)
+    throw InputError(fmt::format("{}: no admitgen:model block (not a header written by admitgen emit)", origin));
+  std::string json = text.substr(b + begin.size(), x - b - begin.size());
+  try {
+    const auto j = nlohmann::json::parse(json);
+    EmittedHeader h;
+    h.format = parse_format(j.at("format").get<std::string>());
+    h.name = j.at("name").get<std::string>();
+    const auto order = Order::parse(j.at("order").get<std::string>());
+    const auto theta = j.at("continuous").at("theta").get<std::vector<double>>();
+    h.surface = MultipoleSurface{order, Eigen::Map<const Eigen::VectorXd>(theta.data(), Eigen::Index(theta.size()))};
+    for (const auto& r : j.at("rates")) {
+      EmittedHeader::Rate rate;
+      rate.fs_hz = r.at("fs_hz").get<int>();
+      const auto& coeffs = r.at(format_name(h.format));
+      if (h.format == Format::f32) {
+        rate.model = model_from_tables(coeffs, rate.fs_hz);
+      } else {
+        FixedCoefficients q;
+        q.format = h.format;
+        q.bits = coeffs.at("bits").get<int>();
+        q.out_shift = coeffs.at("out_shift").get<int>();
+        q.y_exp = coeffs.at("y_exp").get<int>();
+        q.acc_shift = coeffs.at("acc_shift").get<int>();
+        q.l1_norm = coeffs.at("l1_norm").get<double>();
+        q.fir = coeffs.at("fir").get<std::vector<std::int32_t>>();
+        for (const auto& t : coeffs.at("real")) q.real.push_back({t.at(0), t.at(1), t.at(2)});
+        for (const auto& p : coeffs.at("pair")) q.pair.push_back({p.at(0), p.at(1), p.at(2), p.at(3), p.at(4), p.at(5)});
+        rate.model = q.dequantised(rate.fs_hz);
+        rate.fixed = q;
+      }
+      h.rates.push_back(std::move(rate));
+    }
+    return h;
+  } catch (const nlohmann::json::exception& ex) {
+    throw InputError(fmt::format("{}: unreadable admitgen:model block ({})", origin, ex.what()));
+  }
+}
+
+}  // namespace admitgen::codegen

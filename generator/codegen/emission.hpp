@@ -1,0 +1,83 @@
+/// @file
+/// `admitgen emit` as a library: fit.json → discrete models per sample rate → quantised tables →
+/// the generated C header (templates/admitgen_boundary.h.in), band-absorption JSON, golden vectors,
+/// and the reader of a header's machine-readable block (what `admitgen check` verifies).
+#pragma once
+
+#include "codegen/band_absorption.hpp"
+#include "codegen/coefficients.hpp"
+#include "codegen/discrete_model.hpp"
+#include "physics/multipole_surface.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace admitgen::codegen {
+
+/// Runtime ABI the generated headers are written for (must equal ADMITGEN_RT_ABI_VERSION).
+inline constexpr int kRuntimeAbi = 1;
+
+struct EmitSettings {
+  std::vector<double> fs_hz;
+  Format format = Format::f32;
+  std::string name;   ///< C identifier prefix of everything emitted
+  std::string order;  ///< empty: the fit's selected order
+  Estimate estimate = Estimate::mean;
+  int fir_taps = 0;   ///< 0: automatic
+};
+
+struct EmittedRate {
+  int fs_hz = 0;
+  DiscreteModel model;                      ///< double precision, before rounding to the format
+  FloatCoefficients f32;                    ///< format f32
+  std::optional<FixedCoefficients> fixed;   ///< formats q31, q15
+};
+
+struct Emission {
+  EmitSettings settings;
+  std::string fit_name;  ///< file name of the fit (no directories: headers stay machine-independent)
+  std::string fit_version, input_sha256;
+  std::uint64_t seed = 0;
+  MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
+  std::vector<double> data_f_hz;
+  std::vector<EmittedRate> rates;
+  std::vector<BandAbsorption> octave, third_octave;
+};
+
+/// Validates the settings (rates integral in [1 kHz, 1 MHz], distinct; name a C identifier) and
+/// computes everything. Throws InputError on bad input.
+Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings);
+
+/// The header text from the template text (deterministic: no timestamp; byte-identical on re-run).
+std::string render_header(const Emission& emission, const std::string& template_text, const std::string& file_name);
+
+/// Machine-readable description of exactly what the header emits (schema "admitgen.emit/1"); the header
+/// carries it between "admitgen:model" and "admitgen:end" markers.
+nlohmann::ordered_json emission_json(const Emission& emission);
+
+/// Band absorption (octave and one-third octave, normal and random incidence) as JSON.
+nlohmann::ordered_json bands_json(const Emission& emission);
+
+/// Bit-exact golden vectors of the first rate (q31/q15 only): impulse, worst-case sign, uniform noise at
+/// −6 dBFS from Rng(seed), zeros; input and expected output in decimal with a hex comment.
+std::string golden_vectors(const Emission& emission, std::uint64_t seed);
+
+/// What a header emitted: read back from its machine-readable block (throws InputError if absent).
+struct EmittedHeader {
+  Format format = Format::f32;
+  std::string name;
+  MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
+  struct Rate {
+    int fs_hz = 0;
+    DiscreteModel model;  ///< exactly the emitted (rounded/quantised) coefficients, in double
+    std::optional<FixedCoefficients> fixed;
+  };
+  std::vector<Rate> rates;
+};
+EmittedHeader read_emitted_header(const std::string& header_text, const std::string& origin);
+
+}  // namespace admitgen::codegen

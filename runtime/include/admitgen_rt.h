@@ -1,0 +1,212 @@
+/*
+ * admitgen_rt.h - recursive-convolution runtime for admitgen multipole boundary filters.
+ * C99, freestanding-friendly: <stddef.h> and <stdint.h> only; no heap, no libm, no globals, reentrant.
+ * Compiles as C99 and as C++.
+ *
+ * What it runs
+ * ------------
+ * A surface admittance G fitted by `admitgen fit` and discretised by `admitgen emit` into a generated
+ * header (tables + a model struct per sample rate). Conventions: time dependence e^{+jwt}; the input u
+ * is the wall pressure, the output y the normal particle velocity into the wall, both normalised
+ * (G = rho*c*Y). Per sample n and node:
+ *
+ *   y^n = sum_k d_k u^{n-k}                                  FIR path (direct term + folded fast poles)
+ *       + sum_q c_q x_q^n,        x_q^n = x_q + eps_q (u^n - x_q)               real poles, delta form
+ *       + sum_s (cr_s xi_s^n + ci_s eta_s^n),                                     pairs, coupled form
+ *         xi^n  = xi  + (e_r xi  - p_i eta + g u^n)
+ *         eta^n = eta + (e_r eta + p_i xi)
+ *
+ * with eps = 1 - e^{-lambda T}, (1 + e_r) + j p_i = e^{-(alpha + j beta) T}, g = 1 - e^{-alpha T}: every
+ * state is normalised so that |state| <= max |u| (its impulse response has L1 norm <= 1). The pair is
+ * the Gold-Rader coupled (rotation x decay) form, contractive even under per-sample coefficient changes.
+ * The split y^n = h0 u^n + s^{n-1} (instantaneous gain h0 = model->h0, history s from
+ * admitgen_rt_history_f32) lets an FDTD/FV solver solve its boundary node implicitly:
+ * u^n = (a^n - c s^{n-1}) / (1 + c h0), then admitgen_rt_commit_f32(u^n).
+ *
+ * Lifecycle (miniaudio/CMSIS style; the caller owns every byte)
+ * ------------------------------------------------------------
+ *   size_t bytes = admitgen_rt_state_bytes_f32(&model, n_nodes);      memory for n_nodes nodes
+ *   admitgen_rt_init_f32(&inst, &model, fs_hz, n_nodes, mem, bytes);  checks ABI and rate, zeroes state
+ *   admitgen_rt_process_f32(&inst, in, out, n_frames, stride);        any block size; in == out allowed
+ *   admitgen_rt_reinit_f32(&inst, &other_model, fs_hz);               swap coefficients, keep the state
+ *   admitgen_rt_reset_f32(&inst);                                     zero the state
+ * mem must be aligned to ADMITGEN_RT_ALIGN bytes. Buffers: frame f of node i is in[f*stride + i], so
+ * one call serves a planar mono buffer (n_nodes 1, stride 1), an interleaved multichannel buffer
+ * (n_nodes = channels = stride) or every boundary node of a solver (one frame, n_nodes nodes).
+ * State layout is structure-of-arrays, state[term][node], so each term's update is one loop over nodes
+ * that the compiler vectorises.
+ *
+ * Formats: _f32 (float), _q31 (Q1.31 = TI Q0.31 data), _q15 (Q1.15 data). The fixed-point kernels keep
+ * Q1.31 states for both formats, 64-bit accumulators, per-term coefficient exponents and saturating
+ * stores; see their "Scaling and Overflow Behavior" paragraphs below.
+ * Denormals: decaying float states become subnormal; set FTZ/DAZ in the audio thread (as miniaudio and
+ * Steam Audio do) if the platform is slow on subnormals.
+ */
+#ifndef ADMITGEN_RT_H
+#define ADMITGEN_RT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/** ABI of the model structs below; generated headers refuse to compile against another one. */
+#define ADMITGEN_RT_ABI_VERSION 1
+/** Required alignment (bytes) of the state memory handed to *_init (one cache line; AVX-512 safe). */
+#define ADMITGEN_RT_ALIGN 64
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define ADMITGEN_RT_NODISCARD __attribute__((warn_unused_result))
+#else
+#define ADMITGEN_RT_NODISCARD
+#endif
+
+#if defined(__cplusplus)
+#define ADMITGEN_RT_RESTRICT __restrict
+#else
+#define ADMITGEN_RT_RESTRICT restrict
+#endif
+
+/** Result codes (int32_t; 0 success, negative failure). */
+typedef int32_t admitgen_rt_result;
+#define ADMITGEN_RT_SUCCESS 0
+#define ADMITGEN_RT_INVALID_ARGS (-2)
+#define ADMITGEN_RT_ABI_MISMATCH (-10)
+#define ADMITGEN_RT_RATE_MISMATCH (-11)
+#define ADMITGEN_RT_SHAPE_MISMATCH (-12)
+#define ADMITGEN_RT_BUFFER_TOO_SMALL (-13)
+#define ADMITGEN_RT_MISALIGNED (-14)
+
+/** Discretisation methods (model->method). */
+#define ADMITGEN_RT_METHOD_MATCHED_EXP 1 /**< exact poles e^{-aT}, least-squares refitted numerators */
+
+/** A constant message for a result code (never NULL). */
+const char *admitgen_rt_result_description(admitgen_rt_result result);
+
+/* ------------------------------------------------------------------------------------------------ */
+/* Models: filled by generated headers as static const data (place them in flash/ROM).                */
+
+/** Float model. Coefficient ordering: fir {d_0..d_{n_fir-1}}; real {eps, c} per pole;
+ *  pair {e_r, p_i, g, cr, ci} per pair (cr = 2 Re c, ci = -2 Im c). */
+typedef struct admitgen_rt_model_f32 {
+  uint32_t abi_version; /**< ADMITGEN_RT_ABI_VERSION of the generator */
+  int32_t fs_hz;        /**< the only sample rate these coefficients are valid for */
+  int32_t method;       /**< ADMITGEN_RT_METHOD_* */
+  int32_t n_fir, n_real, n_pair;
+  float h0; /**< instantaneous gain: y^n = h0 u^n + s^{n-1} */
+  const float *fir;
+  const float *real;
+  const float *pair;
+} admitgen_rt_model_f32;
+
+/** Q31 model. B = 31. Ordering: fir {d_k}; real {eps, shift, c}; pair {e_r, p_i, g, shift, cr, ci}.
+ *  State-update coefficients: value = mantissa * 2^-(31 + shift), one shift per term (delta form:
+ *  eps keeps 31 significant bits however small lambda*T is). Output table (fir, c, cr, ci): value =
+ *  mantissa * 2^(y_exp - 31) with one exponent for the table; the kernel only needs
+ *  acc_shift = 31 + out_shift - y_exp. Output y_q31 represents y * 2^-out_shift. */
+typedef struct admitgen_rt_model_q31 {
+  uint32_t abi_version;
+  int32_t fs_hz;
+  int32_t method;
+  int32_t n_fir, n_real, n_pair;
+  int32_t out_shift; /**< output scaling: y_q31 = y * 2^-out_shift; 2^out_shift >= L1 norm of h */
+  int32_t acc_shift; /**< right shift of the 64-bit accumulator to the output (1..62) */
+  const int32_t *fir;
+  const int32_t *real;
+  const int32_t *pair;
+} admitgen_rt_model_q31;
+
+/** Q15 model: as Q31 with B = 15 and int16 tables (shifts stored in the same int16 tables). */
+typedef struct admitgen_rt_model_q15 {
+  uint32_t abi_version;
+  int32_t fs_hz;
+  int32_t method;
+  int32_t n_fir, n_real, n_pair;
+  int32_t out_shift;
+  int32_t acc_shift;
+  const int16_t *fir;
+  const int16_t *real;
+  const int16_t *pair;
+} admitgen_rt_model_q15;
+
+/* ------------------------------------------------------------------------------------------------ */
+/* Instances: transparent, caller-owned; every pointer points into the caller's state memory.         */
+
+typedef struct admitgen_rt_f32 {
+  const admitgen_rt_model_f32 *model;
+  int32_t n_nodes;
+  int32_t head;  /**< ring position of u^{n-1} in hist */
+  float *x;      /**< [n_real][n_nodes] */
+  float *xi;     /**< [n_pair][n_nodes] */
+  float *eta;    /**< [n_pair][n_nodes] */
+  float *hist;   /**< [n_fir-1][n_nodes] ring of past inputs */
+  float *u;      /**< [n_nodes] scratch: current input (allows in == out) */
+  float *acc;    /**< [n_nodes] scratch: output accumulator */
+} admitgen_rt_f32;
+
+typedef struct admitgen_rt_q31 {
+  const admitgen_rt_model_q31 *model;
+  int32_t n_nodes;
+  int32_t head;
+  int32_t *x, *xi, *eta, *hist, *u; /**< Q1.31 states, same layout as the f32 instance */
+  int64_t *acc;                     /**< [n_nodes] 64-bit accumulators */
+} admitgen_rt_q31;
+
+typedef struct admitgen_rt_q15 {
+  const admitgen_rt_model_q15 *model;
+  int32_t n_nodes;
+  int32_t head;
+  int32_t *x, *xi, *eta, *hist, *u; /**< Q1.31 states (wider than the Q1.15 data) */
+  int64_t *acc;
+} admitgen_rt_q15;
+
+/* ------------------------------------------------------------------------------------------------ */
+/* f32                                                                                                */
+
+/** Bytes of state memory for n_nodes nodes (0 if the arguments are invalid). */
+size_t admitgen_rt_state_bytes_f32(const admitgen_rt_model_f32 *model, int32_t n_nodes);
+/** Binds model and memory, checks ABI (ADMITGEN_RT_ABI_MISMATCH), that model->fs_hz == fs_hz
+ *  (ADMITGEN_RT_RATE_MISMATCH: the coefficients are only valid at their own rate), size and alignment;
+ *  zeroes the state. */
+ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_f32(admitgen_rt_f32 *inst, const admitgen_rt_model_f32 *model,
+                                                              int32_t fs_hz, int32_t n_nodes, void *mem, size_t bytes);
+/** Replaces the coefficients and keeps the state (material morphing without a click). The new model
+ *  must have the same n_fir, n_real, n_pair (ADMITGEN_RT_SHAPE_MISMATCH) and rate. */
+ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_f32(admitgen_rt_f32 *inst, const admitgen_rt_model_f32 *model,
+                                                                int32_t fs_hz);
+void admitgen_rt_reset_f32(admitgen_rt_f32 *inst);
+/** Filters n_frames frames of every node: node i of frame f is pIn[f*stride + i] (stride >= n_nodes).
+ *  pIn == pOut is allowed; pOut may be NULL (advance the state only). */
+void admitgen_rt_process_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t n_frames, int32_t stride);
+/** History s^{n-1} of every node (pHist[n_nodes]): the output the next frame would give for u = 0. */
+void admitgen_rt_history_f32(const admitgen_rt_f32 *inst, float *pHist);
+/** Commits one frame u^n (pU[n_nodes]) after an implicit solve; writes y^n to pY if not NULL. */
+void admitgen_rt_commit_f32(admitgen_rt_f32 *inst, const float *pU, float *pY);
+
+/* ------------------------------------------------------------------------------------------------ */
+/* q31 / q15: same lifecycle. Scaling and Overflow Behavior is documented in the kernel sources and
+ * repeated in every generated header next to the tables.                                             */
+
+size_t admitgen_rt_state_bytes_q31(const admitgen_rt_model_q31 *model, int32_t n_nodes);
+ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_q31(admitgen_rt_q31 *inst, const admitgen_rt_model_q31 *model,
+                                                              int32_t fs_hz, int32_t n_nodes, void *mem, size_t bytes);
+ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_q31(admitgen_rt_q31 *inst, const admitgen_rt_model_q31 *model,
+                                                                int32_t fs_hz);
+void admitgen_rt_reset_q31(admitgen_rt_q31 *inst);
+void admitgen_rt_process_q31(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride);
+
+size_t admitgen_rt_state_bytes_q15(const admitgen_rt_model_q15 *model, int32_t n_nodes);
+ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_q15(admitgen_rt_q15 *inst, const admitgen_rt_model_q15 *model,
+                                                              int32_t fs_hz, int32_t n_nodes, void *mem, size_t bytes);
+ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_q15(admitgen_rt_q15 *inst, const admitgen_rt_model_q15 *model,
+                                                                int32_t fs_hz);
+void admitgen_rt_reset_q15(admitgen_rt_q15 *inst);
+void admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ADMITGEN_RT_H */
