@@ -29,6 +29,7 @@ FitSettings to_settings(const FitOptions& o) {
   s.rule = SelectionRule::parse(o.select);
   s.data_count = parse_data_count(o.likelihood_k);
   s.reduce_symmetry = !o.no_symmetry_reduction;
+  s.passive = o.passive;
   if (!o.priors.empty()) {
     s.priors = PriorRanges::from_file(o.priors);
     s.priors_origin = o.priors;
@@ -79,6 +80,9 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0, 6))->capture_default_str();
   sub->add_flag("--no-symmetry-reduction", opt->no_symmetry_reduction,
                 "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
+  sub->add_flag("--passive", opt->passive,
+                "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
+                "truncated to passive models");
   sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
   sub->callback([opt, &exit_code] { exit_code = run_fit_command(*opt); });
 }

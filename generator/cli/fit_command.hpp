@@ -29,6 +29,7 @@ struct FitOptions {
   int slices = 0;
   int missed_mode_retries = 2;
   bool no_symmetry_reduction = false;
+  bool passive = false;
   bool quiet = false;
 };
 

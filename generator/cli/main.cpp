@@ -2,6 +2,7 @@
 /// admitgen command line: one options struct + setup + run function per subcommand (cli/*_command.*).
 /// Only this function maps errors to exit codes: 0 success, 1 a check found a violation, 2 bad input.
 #include "cli/fit_command.hpp"
+#include "cli/check_command.hpp"
 #include "cli/diagnose_command.hpp"
 #include "cli/emit_command.hpp"
 #include "cli/synth_command.hpp"
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
   admitgen::cli::setup_emit_command(app, exit_code);
   admitgen::cli::setup_synth_command(app, exit_code);
   admitgen::cli::setup_diagnose_command(app, exit_code);
+  admitgen::cli::setup_check_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

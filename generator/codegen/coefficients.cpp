@@ -163,11 +163,20 @@ int FixedCoefficients::zero_decay_bound() const {
   return static_cast<int>(std::ceil(n)) + static_cast<int>(fir.size()) + 1;
 }
 
-std::vector<std::int32_t> run_fixed(const FixedCoefficients& c, const std::vector<std::int32_t>& in) {
+std::vector<std::int32_t> run_fixed(const FixedCoefficients& c, const std::vector<std::int32_t>& in,
+                                    FixedState* state) {
   const int b = c.bits;
   const bool q15 = c.format == Format::q15;
-  std::vector<std::int32_t> x(c.real.size(), 0), xi(c.pair.size(), 0), eta(c.pair.size(), 0);
-  std::vector<std::int32_t> hist(c.fir.size(), 0);  // hist[k] = u^{n-k}
+  FixedState zero{std::vector<std::int32_t>(c.real.size(), 0), std::vector<std::int32_t>(c.pair.size(), 0),
+                  std::vector<std::int32_t>(c.pair.size(), 0), std::vector<std::int32_t>(c.fir.size(), 0)};
+  FixedState& st = state != nullptr ? *state : zero;
+  ADMITGEN_ENSURE(st.x.size() == c.real.size() && st.xi.size() == c.pair.size() && st.eta.size() == c.pair.size() &&
+                      st.hist.size() == c.fir.size(),
+                  "state shape does not match the coefficients");
+  auto& x = st.x;
+  auto& xi = st.xi;
+  auto& eta = st.eta;
+  auto& hist = st.hist;  // hist[k] = u^{n-k}
   std::vector<std::int32_t> y(in.size());
   const i64 round = i64{1} << (c.acc_shift - 1);
   const i64 lo = q15 ? INT16_MIN : INT32_MIN, hi = q15 ? INT16_MAX : INT32_MAX;

@@ -72,8 +72,15 @@ struct FixedCoefficients {
 /// Quantises to q31 or q15 (throws InternalError for f32).
 FixedCoefficients quantise(const DiscreteModel& model, Format format);
 
-/// Bit-exact model of admitgen_rt_process_q31 / _q15 for one node, from zero state. Inputs are Q31
-/// (q31) or Q15 values (q15) held in int32; outputs likewise.
-std::vector<std::int32_t> run_fixed(const FixedCoefficients& coefficients, const std::vector<std::int32_t>& in);
+/// Q1.31 states of one node (x per real pole, ξ and η per pair, hist[k] = u^{n−k}, k < n_fir).
+struct FixedState {
+  std::vector<std::int32_t> x, xi, eta, hist;
+};
+
+/// Bit-exact model of admitgen_rt_process_q31 / _q15 for one node. Inputs are Q31 (q31) or Q15 values
+/// (q15) held in int32; outputs likewise. Starts from zero state, or from *state when given (sized as
+/// the coefficients), which then receives the final state.
+std::vector<std::int32_t> run_fixed(const FixedCoefficients& coefficients, const std::vector<std::int32_t>& in,
+                                    FixedState* state = nullptr);
 
 }  // namespace admitgen::codegen

@@ -401,6 +401,8 @@ EmittedHeader read_emitted_header(const std::string& text, const std::string& or
     const auto order = Order::parse(j.at("order").get<std::string>());
     const auto theta = j.at("continuous").at("theta").get<std::vector<double>>();
     h.surface = MultipoleSurface{order, Eigen::Map<const Eigen::VectorXd>(theta.data(), Eigen::Index(theta.size()))};
+    h.data_f_min_hz = j.at("data_f_min_hz").get<double>();
+    h.data_f_max_hz = j.at("data_f_max_hz").get<double>();
     for (const auto& r : j.at("rates")) {
       EmittedHeader::Rate rate;
       rate.fs_hz = r.at("fs_hz").get<int>();

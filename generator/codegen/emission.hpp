@@ -71,6 +71,7 @@ struct EmittedHeader {
   Format format = Format::f32;
   std::string name;
   MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
+  double data_f_min_hz = 0.0, data_f_max_hz = 0.0;  ///< band of the fitted data
   struct Rate {
     int fs_hz = 0;
     DiscreteModel model;  ///< exactly the emitted (rounded/quantised) coefficients, in double

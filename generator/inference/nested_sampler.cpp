@@ -52,13 +52,26 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
   run.dim = dim;
   Eigen::MatrixXd live_u(dim, n), live_theta(dim, n);
   Eigen::VectorXd live_log_l(n);
+  // ln L = −∞ marks a point outside the support (e.g. a prior truncated to passive models): the initial
+  // live points are drawn by rejection, so the run samples the prior restricted to the support and ln Z is
+  // the evidence under that renormalised prior; draws/accepted estimate the support fraction.
+  constexpr long kMaxDrawsPerPoint = 10000;
+  long draws = 0;
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < dim; ++k) live_u(k, i) = rng.uniform();
-    if (fold) fold(live_u.col(i).data());
-    prior_transform(live_u.col(i).data(), live_theta.col(i).data());
-    live_log_l[i] = log_likelihood(live_theta.col(i).data());
-    ++run.calls;
+    do {
+      if (draws >= kMaxDrawsPerPoint * n)
+        throw InputError(fmt::format("fewer than 1 in {} prior draws has a finite likelihood (a support this small, "
+                                     "e.g. --passive with a prior of almost only non-passive models, cannot be "
+                                     "sampled)", kMaxDrawsPerPoint));
+      for (int k = 0; k < dim; ++k) live_u(k, i) = rng.uniform();
+      if (fold) fold(live_u.col(i).data());
+      prior_transform(live_u.col(i).data(), live_theta.col(i).data());
+      live_log_l[i] = log_likelihood(live_theta.col(i).data());
+      ++run.calls;
+      ++draws;
+    } while (live_log_l[i] == -std::numeric_limits<double>::infinity());
   }
+  run.log_support_fraction = std::log(static_cast<double>(n) / static_cast<double>(draws));
 
   SliceStep step(dim, prior_transform, log_likelihood);
   // Clusters need enough points for a covariance: at least 2·dim and 20.

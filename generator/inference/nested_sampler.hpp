@@ -45,6 +45,10 @@ struct NestedRun {
   long calls = 0;                      ///< likelihood evaluations (initial live points included)
   long iterations = 0;                 ///< deaths
   std::string stopped_by;              ///< "dlogz" or "max_iterations"
+  /// ln of the prior fraction with finite likelihood, estimated from the initial draws (0 when ln L is
+  /// never −∞). ln Z is the evidence under the prior renormalised to that support; ln Z + this is
+  /// ln ∫ L π over the original prior.
+  double log_support_fraction = 0.0;
 
   std::size_t size() const { return log_likelihood.size(); }
   const double* point(std::size_t i) const { return samples.data() + i * static_cast<std::size_t>(dim); }

@@ -48,7 +48,7 @@ Json input_json(const Measurement& data, const ReadOptions& read) {
 
 Json settings_json(const FitSettings& s, std::size_t n_points) {
   const int k = static_cast<int>(s.data_count == DataCount::two_per_point ? 2 * n_points : n_points);
-  return Json{{"live", s.sampler.live},
+  Json j{{"live", s.sampler.live},
               {"seed", s.sampler.seed},
               {"priors", {{"source", s.priors_origin}, {"symmetry_reduced", s.reduce_symmetry}, {"ranges", s.priors.to_json()}}},
               {"likelihood", fmt::format("{}; K = {}", describe(s.data_count), k)},
@@ -60,10 +60,12 @@ Json settings_json(const FitSettings& s, std::size_t n_points) {
                            {"max_iterations", s.sampler.max_iterations},
                            {"missed_mode_retries", s.missed_mode_retries},
                            {"slices", s.sampler.slices > 0 ? Json(s.sampler.slices) : Json("3 + dim")}}}};
+  if (s.passive) j["passive"] = "prior truncated to passive models (Hamiltonian test); evidence under the renormalised prior";
+  return j;
 }
 
 Json model_json(const ModelResult& m) {
-  return Json{{"order", m.order.name()},
+  Json j{{"order", m.order.name()},
               {"Q", m.order.q()},
               {"S", m.order.s()},
               {"live", m.live},
@@ -76,6 +78,8 @@ Json model_json(const ModelResult& m) {
               {"stopped_by", m.run.stopped_by},
               {"seconds", m.seconds},
               {"parameters", to_json(m.parameters)}};
+  if (m.run.log_support_fraction != 0.0) j["log_passive_prior_fraction"] = m.run.log_support_fraction;
+  return j;
 }
 
 Json predictive_json(const PredictiveBand& b) {

@@ -1,5 +1,6 @@
 #include "selection/fit.hpp"
 
+#include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
 
@@ -7,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <numeric>
@@ -22,6 +24,10 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
                       const NestedProgressFn& progress, int round) {
   const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
   const Likelihood likelihood(data, order, settings.data_count);
+  const auto log_likelihood = [&](const double* th) {
+    if (settings.passive && !checks::is_passive(order, th)) return -std::numeric_limits<double>::infinity();
+    return likelihood(th);
+  };
   NestedSettings sampler = settings.sampler;
   sampler.seed = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
   sampler.live = settings.sampler.live << round;
@@ -29,7 +35,7 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
   ModelResult result{order,
                      run_nested_sampling(
                          order.dim(), [&](const double* u, double* th) { transform(u, th); },
-                         [&](const double* th) { return likelihood(th); }, sampler, progress,
+                         log_likelihood, sampler, progress,
                          [&](double* u) { transform.fold(u); }),
                      sampler.live, 0.0, {}};
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

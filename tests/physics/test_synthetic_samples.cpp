@@ -31,9 +31,9 @@ TEST_CASE("synthetic glass beads: synth regenerates the committed CSV byte for b
 }
 
 TEST_CASE("synthetic glass beads: the committed Q0-2 x S0-2 fit selects Q1S1, the cheapest order within 10 dB") {
-  // The fit ran with --select cheapest:10 (the paper's argument for Q1S1): Q1S1, Q2S1, Q2S2 and Q0S2 are
-  // within a few deciban, a tie at the ±0.25-nat evidence errors; no order with fewer than 3 buffers
-  // comes close, so the choice of Q1S1 does not hinge on that tie.
+  // The fit ran with --select cheapest:10 (the paper's argument for Q1S1). Q1S1 also has the highest
+  // evidence, but Q2S1 and the S = 2 orders are within a few deciban (a near-tie at the ±0.25-nat evidence
+  // errors); no order with fewer than 3 buffers comes close, so the choice of Q1S1 does not hinge on it.
   const nlohmann::json fit = committed_fit("glass_beads_40mm_fit");
   CHECK(fit["selected"]["order"] == "Q1S1");
   CHECK(fit["settings"]["select"] == "cheapest (fewest Q+2S buffers) within 10 dB of the best evidence");
