@@ -52,7 +52,7 @@ TEST_SUITE("statistical") {
       const Eigen::VectorXd theta = Eigen::Map<const Eigen::VectorXd>(chosen.run.point(best), chosen.order.dim());
       const Eigen::ArrayXd alpha_model = absorption(evaluate_multipole(chosen.order, theta, data.omega()));
       const double alpha_rms = std::sqrt((alpha_model - alpha_measured).square().mean());
-      MESSAGE(c.file, ": selected ", chosen.order.name(), ", ln Z ", chosen.run.log_z, " ± ", chosen.run.log_z_error,
+      MESSAGE(std::string(c.file), ": selected ", chosen.order.name(), ", ln Z ", chosen.run.log_z, " ± ", chosen.run.log_z_error,
               ", relative RMS residual ", residual, ", alpha RMS error ", alpha_rms, ", warnings left ",
               fit.warnings.size());
       CHECK(residual <= c.max_relative_residual);
