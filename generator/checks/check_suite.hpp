@@ -1,0 +1,59 @@
+/// @file
+/// `admitgen check` as a library: what is checked (a header's machine-readable block and C tables, or a
+/// fit's continuous model) and the six checks of the issue plus the header's self-consistency:
+///
+///  causality             every λ_q, α_s > 0 (continuous poles in the left half-plane)
+///  discrete_stability    every emitted, quantised pole |z| < 1, exactly (integer arithmetic for q31/q15)
+///  passivity_continuous  Re G(jω) ≥ 0 ∀ω ≥ 0 by the Hamiltonian eigenvalue test (checks/passivity.hpp)
+///  passivity_discrete    Re H(e^{jθ}) ≥ 0 on [0, π] for the emitted, quantised filter (bilinear map z → s)
+///  headroom              L1 norm of each state's and the output's impulse response within its Q range,
+///                        64-bit accumulator bounds (q31/q15)
+///  limit_cycle           zero input after full-scale states reaches exactly 0 (fixed point: bit-exact
+///                        integer model; f32: IEEE single simulation) — no limit cycle, no deadband
+///  header_integrity      the C tables and model structs equal the machine-readable block
+#pragma once
+
+#include "checks/report.hpp"
+#include "codegen/emission.hpp"
+#include "physics/multipole_surface.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace admitgen::checks {
+
+struct CheckSubject {
+  std::string origin;
+  std::string kind;  ///< "header" or "fit"
+  MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
+  double data_f_min_hz = 0.0, data_f_max_hz = 0.0;
+  std::optional<codegen::EmittedHeader> header;  ///< headers only
+  std::string header_text;                       ///< headers only
+};
+
+/// From an emitted header's text (throws InputError if it has no readable admitgen:model block).
+CheckSubject subject_from_header(const std::string& text, const std::string& origin);
+/// From a parsed fit.json: the selected order, or `order`, posterior mean or max-likelihood point.
+CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& origin, const std::string& order,
+                              Estimate estimate);
+/// Reads FILE.h or FIT.json (decided by content: JSON with schema admitgen.fit/1, else a header).
+/// Throws FileError if the file is unreadable or neither.
+CheckSubject load_subject(const std::string& path, const std::string& order = {}, Estimate estimate = Estimate::mean);
+
+CheckResult check_causality(const CheckSubject& subject);
+CheckResult check_discrete_stability(const CheckSubject& subject);
+CheckResult check_continuous_passivity(const CheckSubject& subject);
+CheckResult check_discrete_passivity(const CheckSubject& subject);
+CheckResult check_headroom(const CheckSubject& subject);
+CheckResult check_limit_cycles(const CheckSubject& subject);
+CheckResult check_header_integrity(const CheckSubject& subject);
+
+/// Every check, in the order above (header_integrity last).
+CheckReport run_checks(const CheckSubject& subject);
+
+/// "fs 48000 Hz, pair 2 (alpha 310 1/s, beta 6283 1/s = 1000 Hz)" and the like, for failure messages.
+std::string term_location(int fs_hz, const codegen::DiscreteModel& model, bool pair, std::size_t index);
+
+}  // namespace admitgen::checks

@@ -1,0 +1,121 @@
+#include "checks/check_suite.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <optional>
+
+namespace admitgen::checks {
+namespace {
+
+/// The comma-separated initialiser tokens of `static const TYPE NAME[...] = { ... };` or
+/// `static const TYPE NAME = { ... };` (comments removed), or nothing if the declaration is absent.
+std::optional<std::vector<std::string>> initialiser(const std::string& text, const std::string& type,
+                                                    const std::string& name, bool array) {
+  const std::string decl = "static const " + type + " " + name + (array ? "[" : " = {");
+  const std::size_t at = text.find(decl);
+  if (at == std::string::npos) return std::nullopt;
+  const std::size_t open = text.find('{', at), close = text.find("};", at);
+  if (open == std::string::npos || close == std::string::npos || close < open) return std::nullopt;
+  std::string body;
+  for (std::size_t i = open + 1; i < close; ++i) {
+    if (text.compare(i, 2, "/*") == 0) {
+      const std::size_t end = text.find("*/", i + 2);
+      if (end == std::string::npos || end > close) return std::nullopt;
+      i = end + 1;
+      continue;
+    }
+    body += text[i];
+  }
+  std::vector<std::string> tokens;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= body.size(); ++i)
+    if (i == body.size() || body[i] == ',') {
+      std::string t = body.substr(start, i - start);
+      const auto b = t.find_first_not_of(" \t\r\n"), e = t.find_last_not_of(" \t\r\n");
+      if (b != std::string::npos) tokens.push_back(t.substr(b, e - b + 1));
+      start = i + 1;
+    }
+  return tokens;
+}
+
+/// Exact numeric value of a C literal token ("-12", "1u", "0.25f", "1e-3"), or nothing.
+std::optional<double> literal(const std::string& t, bool is_float) {
+  char* end = nullptr;
+  const double v = is_float ? double(std::strtof(t.c_str(), &end)) : double(std::strtoll(t.c_str(), &end, 10));
+  if (end == t.c_str()) return std::nullopt;
+  const std::string rest(end);
+  if (!(rest.empty() || rest == "f" || rest == "u")) return std::nullopt;
+  return v;
+}
+
+void compare(CheckResult& r, const std::string& text, const std::string& type, const std::string& name, bool array,
+             const std::vector<double>& expected, bool is_float, std::size_t first, std::size_t count) {
+  const auto tokens = initialiser(text, type, name, array);
+  if (!tokens) {
+    r.fail(fmt::format("{}: declaration missing or unreadable", name));
+    return;
+  }
+  if (tokens->size() < first + count) {
+    r.fail(fmt::format("{}: {} initialisers, the machine-readable block needs {}", name, tokens->size(), first + count));
+    return;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto v = literal((*tokens)[first + i], is_float);
+    if (!v || *v != expected[i])
+      r.fail(fmt::format("{}[{}] is '{}' in the C table but {} in the machine-readable block: the table was edited",
+                         name, first + i, (*tokens)[first + i], expected[i]));
+  }
+}
+
+}  // namespace
+
+CheckResult check_header_integrity(const CheckSubject& s) {
+  CheckResult r;
+  r.name = "header_integrity";
+  if (!s.header) {
+    r.status = Status::not_applicable;
+    r.summary = "not a header";
+    return r;
+  }
+  r.method = "every C table and model struct equals the machine-readable block the other checks read";
+  const auto& h = *s.header;
+  const bool f32 = h.format == codegen::Format::f32;
+  const std::string fmt_name = codegen::format_name(h.format);
+  const std::string ctype = f32 ? "float" : h.format == codegen::Format::q31 ? "int32_t" : "int16_t";
+  std::size_t values = 0;
+  for (const auto& rate : h.rates) {
+    const std::string base = fmt::format("{}_{}", h.name, rate.fs_hz);
+    std::vector<double> fir, real, pair, scalars;
+    const auto& m = rate.model;
+    if (f32) {
+      const auto f = codegen::to_float(m);
+      for (float v : f.fir) fir.push_back(v);
+      for (const auto& t : f.real) real.insert(real.end(), t.begin(), t.end());
+      for (const auto& t : f.pair) pair.insert(pair.end(), t.begin(), t.end());
+      scalars = {double(f.h0)};
+    } else {
+      const auto& q = *rate.fixed;
+      for (auto v : q.fir) fir.push_back(v);
+      for (const auto& t : q.real) real.insert(real.end(), {double(t.eps), double(t.shift), double(t.c)});
+      for (const auto& t : q.pair)
+        pair.insert(pair.end(), {double(t.e_r), double(t.p_i), double(t.g), double(t.shift), double(t.c_r), double(t.c_i)});
+      scalars = {double(q.out_shift), double(q.acc_shift)};
+    }
+    compare(r, s.header_text, ctype, base + "_fir", true, fir, f32, 0, fir.size());
+    compare(r, s.header_text, ctype, base + "_real", true, real, f32, 0, real.size());
+    compare(r, s.header_text, ctype, base + "_pair", true, pair, f32, 0, pair.size());
+    // Model struct: {abi, fs, method, n_fir, n_real, n_pair, <h0 | out_shift, acc_shift>, pointers...}
+    const std::vector<double> shape{double(codegen::kRuntimeAbi), double(rate.fs_hz)};
+    compare(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, false, shape, false, 0, 2);
+    const std::vector<double> counts{double(m.fir.size()), double(m.real.size()), double(m.pair.size())};
+    compare(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, false, counts, false, 3, 3);
+    compare(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, false, scalars, f32, 6, scalars.size());
+    values += fir.size() + real.size() + pair.size() + scalars.size() + 5;
+  }
+  r.summary = r.failures.empty() ? fmt::format("{} table values and struct fields match the block", values)
+                                 : "the C tables differ from the machine-readable block";
+  return r;
+}
+
+}  // namespace admitgen::checks

@@ -1,0 +1,101 @@
+#include "checks/check_suite.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdlib>
+#include <limits>
+
+namespace admitgen::checks {
+namespace {
+
+/// Samples summed explicitly before the geometric tail bound takes over.
+constexpr long kMaxTerms = 1L << 22;
+
+/// Upper bounds of ‖ξ‖₁ and ‖η‖₁ for ψ_n = πⁿ g (the pair's state impulse response): explicit sum over
+/// n < N plus the tail bound g rᴺ/(1 − r), N where that tail is below 1e-13 (or kMaxTerms).
+std::pair<double, double> pair_state_l1(const codegen::PairTerm& p) {
+  const std::complex<double> pi(1.0 + p.e_r, p.p_i);
+  const double r = std::abs(pi);
+  if (!(r < 1.0)) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double xi = 0.0, eta = 0.0, tail = 0.0;
+  std::complex<double> psi(p.g, 0.0);
+  for (long n = 0; n < kMaxTerms; ++n) {
+    xi += std::abs(psi.real());
+    eta += std::abs(psi.imag());
+    psi *= pi;
+    tail = std::abs(psi) / (1.0 - r);
+    if (tail < 1e-13) break;
+  }
+  return {xi + tail, eta + tail};
+}
+
+}  // namespace
+
+/// physics.md §3.3: for |u| ≤ 1, |state| ≤ ‖h_state‖₁ (tight for the worst-case sign input), so each
+/// state needs ‖h_state‖₁ ≤ 1 (Q1.31 range [−1, 1)) and the output needs ‖h‖₁ ≤ 2^out_shift; the 64-bit
+/// sums need Σ|mantissa| < 2^B per state update and over the output table (coefficients.hpp).
+CheckResult check_headroom(const CheckSubject& s) {
+  CheckResult r;
+  r.name = "headroom";
+  if (!s.header || s.header->format == codegen::Format::f32) {
+    r.status = Status::not_applicable;
+    r.summary = s.header ? "f32: floating point (no Q-format range)" : "a fit has no emitted coefficients";
+    return r;
+  }
+  r.method = "L1 norm of each state's and the output's impulse response against its Q range (full-scale input, "
+             "any sign pattern); 64-bit accumulator bounds";
+  double worst_state = 0.0, worst_out = 0.0;
+  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  for (const auto& rate : s.header->rates) {
+    const auto& q = *rate.fixed;
+    const auto& m = rate.model;
+    const double full = std::ldexp(1.0, q.bits);
+    double state_max = 0.0;
+    for (std::size_t i = 0; i < m.real.size(); ++i) {
+      const double eps = m.real[i].eps, l1 = eps / (1.0 - std::abs(1.0 - eps));
+      state_max = std::max(state_max, l1);
+      if (!(l1 <= 1.0)) r.fail(fmt::format("{}: state x L1 norm {:.9g} > 1: a full-scale input saturates it",
+                                           term_location(rate.fs_hz, m, false, i), l1));
+      if (std::abs(double(q.real[i].eps)) >= full)
+        r.fail(fmt::format("{}: |eps mantissa| {} >= 2^{}: the 64-bit update can overflow",
+                           term_location(rate.fs_hz, m, false, i), q.real[i].eps, q.bits));
+    }
+    for (std::size_t i = 0; i < m.pair.size(); ++i) {
+      const auto [xi, eta] = pair_state_l1(m.pair[i]);
+      state_max = std::max({state_max, xi, eta});
+      if (!(std::max(xi, eta) <= 1.0))
+        r.fail(fmt::format("{}: state L1 norms xi {:.9g}, eta {:.9g} exceed 1: a full-scale input saturates them",
+                           term_location(rate.fs_hz, m, true, i), xi, eta));
+      const auto& t = q.pair[i];
+      const double sum = std::abs(double(t.e_r)) + std::abs(double(t.p_i)) + std::abs(double(t.g));
+      if (sum >= full)
+        r.fail(fmt::format("{}: |e_r| + |p_i| + |g| mantissas = {:.0f} >= 2^{}: the 64-bit update can overflow",
+                           term_location(rate.fs_hz, m, true, i), sum, q.bits));
+    }
+    double table = 0.0;
+    for (auto v : q.fir) table += std::abs(double(v));
+    for (const auto& t : q.real) table += std::abs(double(t.c));
+    for (const auto& t : q.pair) table += std::abs(double(t.c_r)) + std::abs(double(t.c_i));
+    if (table >= full)
+      r.fail(fmt::format("fs {} Hz: output table sum of |mantissa| = {:.0f} >= 2^{}: the 64-bit accumulator can "
+                         "overflow", rate.fs_hz, table, q.bits));
+    if (q.acc_shift < 1 || q.acc_shift > 62)
+      r.fail(fmt::format("fs {} Hz: acc_shift {} outside 1..62", rate.fs_hz, q.acc_shift));
+    const double out_l1 = m.l1_norm(), range = std::ldexp(1.0, q.out_shift);
+    if (!(out_l1 <= range))
+      r.fail(fmt::format("fs {} Hz: output L1 norm {:.6g} > 2^out_shift = {:g}: a full-scale worst-case input "
+                         "saturates the output (out_shift {} is too small)", rate.fs_hz, out_l1, range, q.out_shift));
+    worst_state = std::max(worst_state, state_max);
+    worst_out = std::max(worst_out, out_l1 / range);
+    rates.push_back({{"fs_hz", rate.fs_hz}, {"max_state_l1", state_max}, {"output_l1", out_l1},
+                     {"output_range", range}, {"output_table_mantissa_sum", table}});
+  }
+  r.details["rates"] = rates;
+  r.summary = fmt::format("max state L1 {:.6g} (range 1), max output L1 / 2^out_shift = {:.4g}", worst_state, worst_out);
+  return r;
+}
+
+}  // namespace admitgen::checks

@@ -1,0 +1,75 @@
+#include "checks/check_suite.hpp"
+
+#include "core/errors.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iterator>
+
+namespace admitgen::checks {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+CheckSubject subject_from_header(const std::string& text, const std::string& origin) {
+  CheckSubject s;
+  s.origin = origin;
+  s.kind = "header";
+  s.header = codegen::read_emitted_header(text, origin);
+  s.surface = s.header->surface;
+  s.data_f_min_hz = s.header->data_f_min_hz;
+  s.data_f_max_hz = s.header->data_f_max_hz;
+  s.header_text = text;
+  return s;
+}
+
+CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& origin, const std::string& order,
+                              Estimate estimate) {
+  CheckSubject s;
+  s.origin = origin;
+  s.kind = "fit";
+  s.surface = multipole_from_fit(fit, order, estimate, origin);
+  try {
+    s.data_f_min_hz = fit.at("input").at("f_min_hz").get<double>();
+    s.data_f_max_hz = fit.at("input").at("f_max_hz").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: no usable 'input' band ({})", origin, e.what()));
+  }
+  return s;
+}
+
+CheckSubject load_subject(const std::string& path, const std::string& order, Estimate estimate) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, 0, "cannot read the file");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto json = nlohmann::json::parse(text, nullptr, false);
+  if (!json.is_discarded()) {
+    if (!json.is_object() || json.value("schema", std::string()) != "admitgen.fit/1")
+      throw FileError(path, 0, "JSON but not an admitgen fit (schema admitgen.fit/1)");
+    return subject_from_fit(json, path, order, estimate);
+  }
+  if (text.find("admitgen:model") == std::string::npos)
+    throw FileError(path, 0, "neither a fit.json nor a header written by admitgen emit (no admitgen:model block)");
+  return subject_from_header(text, path);
+}
+
+std::string term_location(int fs_hz, const codegen::DiscreteModel& m, bool pair, std::size_t i) {
+  if (!pair)
+    return fmt::format("fs {} Hz, real pole {} (lambda {:.6g} 1/s = {:.4g} Hz)", fs_hz, i + 1, m.real[i].lambda,
+                       m.real[i].lambda / (2 * kPi));
+  return fmt::format("fs {} Hz, pair {} (alpha {:.6g} 1/s, beta {:.6g} 1/s = {:.4g} Hz)", fs_hz, i + 1,
+                     m.pair[i].alpha, m.pair[i].beta, m.pair[i].beta / (2 * kPi));
+}
+
+CheckReport run_checks(const CheckSubject& s) {
+  CheckReport r;
+  r.subject = s.origin;
+  r.kind = s.kind;
+  r.checks = {check_causality(s),    check_discrete_stability(s), check_continuous_passivity(s),
+              check_discrete_passivity(s), check_headroom(s),   check_limit_cycles(s),
+              check_header_integrity(s)};
+  return r;
+}
+
+}  // namespace admitgen::checks

@@ -1,0 +1,35 @@
+#include "cli/check_command.hpp"
+
+#include "checks/check_suite.hpp"
+
+#include <fmt/core.h>
+
+namespace admitgen::cli {
+
+void setup_check_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<CheckOptions>();
+  auto* sub = app.add_subcommand("check", "Prove an emitted header (or a fit's model) stable, passive and overflow-free");
+  sub->footer(
+      "Example:\n  admitgen check wall.h --json\n"
+      "Checks: causality, discrete_stability, passivity_continuous, passivity_discrete (Hamiltonian eigenvalue\n"
+      "tests), headroom, limit_cycle, header_integrity. Exit 0 all hold, 1 a check failed, 2 unusable input.");
+  sub->add_option("file", opt->file, "Header written by admitgen emit, or fit.json written by admitgen fit")->required();
+  sub->add_flag("--json", opt->json, "Print the report as JSON (schema admitgen.check/1)");
+  sub->add_option("--order", opt->order, "fit.json only: check this order (e.g. Q0S2) instead of the selected one");
+  sub->add_option("--estimate", opt->estimate, "fit.json only: posterior summary used as the parameters")
+      ->check(CLI::IsMember({"mean", "max_likelihood"}))->capture_default_str();
+  sub->callback([opt, &exit_code] { exit_code = run_check_command(*opt); });
+}
+
+int run_check_command(const CheckOptions& o) {
+  const auto subject = checks::load_subject(o.file, o.order,
+                                            o.estimate == "mean" ? Estimate::mean : Estimate::max_likelihood);
+  const auto report = checks::run_checks(subject);
+  if (o.json)
+    fmt::print("{}\n", report.to_json().dump(2));
+  else
+    fmt::print("{}", report.to_text());
+  return report.passed() ? 0 : 1;
+}
+
+}  // namespace admitgen::cli
