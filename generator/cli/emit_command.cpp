@@ -1,11 +1,14 @@
 #include "cli/emit_command.hpp"
 
+#include "checks/check_suite.hpp"
+#include "checks/passivity.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "output/fit_reader.hpp"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <cctype>
 #include <cstdio>
@@ -22,16 +25,6 @@ std::string default_name(const std::string& out) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "admitgen_" + s;
   return s;
-}
-
-nlohmann::json read_fit(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, "cannot read the fit");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw FileError(path, 0, fmt::format("not JSON ({})", e.what()));
-  }
 }
 
 }  // namespace
@@ -58,6 +51,9 @@ void setup_emit_command(CLI::App& app, int& exit_code) {
   sub->add_option("--golden-seed", opt->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
   sub->add_option("--templates", opt->templates, "Directory holding admitgen_boundary.h.in (default: installed/source)");
   sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
+  sub->add_flag("--allow-unsafe", opt->allow_unsafe,
+                "Write the header even when it fails admitgen check (non-causal, unstable, non-passive, overflow, "
+                "limit cycle); each failure is printed as a warning");
   sub->callback([opt, &exit_code] { exit_code = run_emit_command(*opt); });
 }
 
@@ -69,13 +65,28 @@ int run_emit_command(const EmitOptions& o) {
   s.order = o.order;
   s.estimate = o.estimate == "mean" ? Estimate::mean : Estimate::max_likelihood;
   s.fir_taps = o.fir_taps;
+  // Prefer, among the refit candidates, one whose emitted response stays passive up to Nyquist.
+  s.acceptable = [](const codegen::DiscreteModel& m) { return checks::discrete_passivity(m).passive; };
   if (!o.golden.empty() && s.format == codegen::Format::f32)
     throw InputError("--golden needs --format q31 or q15 (f32 output is not bit-exact across compilers)");
   const std::string tpl = codegen::load_template(o.templates, "admitgen_boundary.h.in");
-  const auto emission = codegen::prepare_emission(read_fit(o.fit), o.fit, s);
+  const auto emission = codegen::prepare_emission(read_fit_file(o.fit), o.fit, s);
   // Everything is computed before anything is written; each file appears whole or not at all.
   const std::string header =
       codegen::render_header(emission, tpl, std::filesystem::path(o.out).filename().string());
+  // The header is checked exactly as written (admitgen check on its text); a failing one is refused.
+  const auto report = checks::run_checks(checks::subject_from_header(header, o.out));
+  if (!report.passed()) {
+    std::string why;
+    for (const auto& c : report.checks)
+      for (const auto& f : c.failures) why += fmt::format("\n  {}: {}", c.name, f);
+    if (!o.allow_unsafe) {
+      fmt::print(stderr, "admitgen: refusing to write {}: the filter fails admitgen check ({}){}\n"
+                         "(--allow-unsafe writes it anyway)\n", o.out, fmt::join(report.failed_checks(), ", "), why);
+      return 1;  // a check found a violation (contract exit code 1); nothing was written
+    }
+    fmt::print(stderr, "warning: --allow-unsafe: {} fails admitgen check:{}\n", o.out, why);
+  }
   const std::string bands = o.bands_json.empty() ? "" : codegen::bands_json(emission).dump(2) + "\n";
   const std::string golden = o.golden.empty() ? "" : codegen::golden_vectors(emission, o.golden_seed);
   write_file_atomically(o.out, header);

@@ -26,6 +26,7 @@ struct EmitOptions {
   std::uint64_t golden_seed = 1;
   std::string templates;
   bool quiet = false;
+  bool allow_unsafe = false;  ///< write the header even if `admitgen check` would fail it (warns per failure)
 };
 
 void setup_emit_command(CLI::App& app, int& exit_code);

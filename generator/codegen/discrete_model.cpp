@@ -131,15 +131,31 @@ double DiscreteModel::l1_norm() const {
   return s;
 }
 
+namespace {
+
+/// Candidate order: one meeting the options' constraint beats one that does not; between equals, a
+/// refit error below half the incumbent's (the margin keeps the simpler candidate on near-ties).
+bool better(const DiscreteModel& candidate, const DiscreteModel* incumbent, const DiscretiseOptions& options) {
+  if (incumbent == nullptr) return true;
+  if (options.acceptable) {
+    const bool ok = options.acceptable(candidate), incumbent_ok = options.acceptable(*incumbent);
+    if (ok != incumbent_ok) return ok;
+  }
+  return candidate.refit_max_rel_error < 0.5 * incumbent->refit_max_rel_error;
+}
+
+}  // namespace
+
 DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
                          const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
   if (options.fold_factor <= 0.0) {
     DiscreteModel best;
+    bool have = false;
     for (double factor : {4.0, 0.5, 0.25}) {
       DiscretiseOptions o = options;
       o.fold_factor = factor;
       DiscreteModel m = discretise(order, theta, fs_hz, data_f_hz, o);
-      if (best.fs_hz == 0.0 || m.refit_max_rel_error < 0.5 * best.refit_max_rel_error) best = std::move(m);
+      if (better(m, have ? &best : nullptr, options)) best = std::move(m), have = true;
     }
     return best;
   }
@@ -291,8 +307,8 @@ DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, doubl
     DiscreteModel trial = m;
     fit_with(taps, trial);
     if (taps > 1 && coefficient_sum(trial) > kMaxCoefficientGrowth * g_max) continue;
-    if (taps == 1 || trial.refit_max_rel_error < 0.5 * best.refit_max_rel_error) best = trial;
-    if (best.refit_max_rel_error <= options.target_rel_error) break;
+    if (better(trial, taps == 1 ? nullptr : &best, options)) best = trial;
+    if (best.refit_max_rel_error <= options.target_rel_error && (!options.acceptable || options.acceptable(best))) break;
   }
   return best;
 }

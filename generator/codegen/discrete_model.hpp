@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,10 @@ struct DiscretiseOptions {
   /// 0.25, 0.5 and 4 (reference Q1S1 fit, pole at 9.3 kHz: folding wins at 16 and 24 kHz, keeping at 48 kHz).
   double fold_factor = 0.0;
   double target_rel_error = 1e-5;
+  /// Optional constraint on candidates (emit passes discrete passivity): among the fold factors and
+  /// FIR lengths tried, a candidate meeting it beats any that does not; if none meets it, the best
+  /// refit is returned and the caller's checks report why.
+  std::function<bool(const DiscreteModel&)> acceptable;
   static constexpr int kMaxFirTaps = 8;
 };
 

@@ -242,6 +242,7 @@ Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path
   e.fit_name = slash == std::string::npos ? fit_path : fit_path.substr(slash + 1);
   DiscretiseOptions options;
   options.fir_taps = settings.fir_taps;
+  options.acceptable = settings.acceptable;
   for (double fs : settings.fs_hz) {
     EmittedRate r;
     r.fs_hz = static_cast<int>(fs);

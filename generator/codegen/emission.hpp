@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct EmitSettings {
   std::string order;  ///< empty: the fit's selected order
   Estimate estimate = Estimate::mean;
   int fir_taps = 0;   ///< 0: automatic
+  /// Constraint on the discretised model at each rate (the CLI passes discrete passivity); see
+  /// DiscretiseOptions::acceptable.
+  std::function<bool(const DiscreteModel&)> acceptable;
 };
 
 struct EmittedRate {

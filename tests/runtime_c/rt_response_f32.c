@@ -32,7 +32,10 @@ static const rate_bound bounds[] = {
     {96000, {5e-6, 1.5e-5, -1, -1, -1}},
     {48000, {3e-6, 5e-6, 2e-5, -1, -1}},
     {32000, {1.5e-5, 1.5e-5, 3e-5, 8e-5, -1}},
-    {24000, {1e-4, 1.2e-4, 2.5e-4, 8e-4, -1}},
+    /* 24 kHz: emit prefers the refit candidate whose response stays passive up to Nyquist; the most
+     * accurate one was not (Re H < 0 over 8.2-8.7 kHz), and the passive one costs accuracy: measured
+     * 8.6e-5, 2.0e-4, 2.2e-4, 9.7e-4 per band, asserted at 2x. */
+    {24000, {1.8e-4, 4e-4, 4.5e-4, 2e-3, -1}},
     {16000, {2e-3, 2.5e-3, 3.5e-3, 7e-3, 1.7e-2}},
 };
 /* float arithmetic: |H_f32 - H_double| / |G|. States are O(1) and each update adds <= 2^-24 relative error;
