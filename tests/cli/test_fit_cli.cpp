@@ -78,7 +78,7 @@ TEST_CASE("fit: every bad input exits 2 with a message naming the problem and wr
     CHECK(entry.path().string().find(".tmp.") == std::string::npos);
 }
 
-TEST_CASE("fit: byte-identical fit.json for --threads 1 and 2 (timing fields aside); quiet when not a terminal") {
+TEST_CASE("fit: byte-identical fit.json for --threads 1 and 2 (timing fields aside) - quiet when not a terminal") {
   const std::string dir = scratch_dir("fit_determinism");
   const std::string data = sample("reference/q1s1_sigma0.01.csv");
   std::vector<std::string> outputs;

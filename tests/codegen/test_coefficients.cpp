@@ -40,7 +40,7 @@ TEST_CASE("per-term exponents keep eps = 1 − e^{−λT} at full relative preci
   }
 }
 
-TEST_CASE("output scaling: 2^out_shift bounds the L1 norm; mantissa sums fit the 64-bit accumulator") {
+TEST_CASE("output scaling: 2^out_shift bounds the L1 norm - mantissa sums fit the 64-bit accumulator") {
   const DiscreteModel m = test_model();
   for (Format fmt : {Format::q31, Format::q15}) {
     const FixedCoefficients q = quantise(m, fmt);

@@ -57,7 +57,7 @@ TEST_CASE("the refit removes the discretisation error at the data frequencies") 
   CHECK(h[0] == doctest::Approx(m.h0()).epsilon(1e-14));  // y^0 = h0 u^0 for an impulse
 }
 
-TEST_CASE("poles far above the band are folded into the FIR path; rates below the data are refused") {
+TEST_CASE("poles far above the band are folded into the FIR path - rates below the data are refused") {
   std::vector<double> f;
   const auto s = reference_fit(f);
   // 16 kHz: the 9.3 kHz real pole lies above Nyquist; folding it gives < 1 % where keeping it gives 25 %.

@@ -78,7 +78,7 @@ TEST_CASE("emit settings are validated") {
   CHECK_THROWS_AS(prepare_emission(reference_json(), "f", s), InputError);
 }
 
-TEST_CASE("admitgen emit: exit 2 and no output on bad input; f32 header with bands JSON") {
+TEST_CASE("admitgen emit: exit 2 and no output on bad input - f32 header with bands JSON") {
   const std::string dir = test::scratch_dir("emit_cli");
   const std::string fit = test::sample("fits/q1s1_reference.json");
   auto r = test::run_admitgen("emit '" + fit + "' --fs 8000 --format q31 --out " + dir + "/low.h");

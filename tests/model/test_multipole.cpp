@@ -65,7 +65,7 @@ TEST_CASE("multipole: every order of Q0-3 x S0-3 matches the term-by-term comple
   }
 }
 
-TEST_CASE("multipole: a pair equals its real second-order section; beta sign flip with C is a symmetry") {
+TEST_CASE("multipole: a pair equals its real second-order section - beta sign flip with C is a symmetry") {
   const Order o(0, 1);
   Eigen::VectorXd th(5);
   th << 0.0, 2019.0, -263.0, 1530.0, 10063.0;

@@ -47,7 +47,7 @@ TEST_CASE("synthetic glass beads: the committed Q0-2 x S0-2 fit selects Q1S1, th
   CHECK(bayes_factor(fit, "Q2S1") < 0.0);  // the redundant real pole does not pay for itself
 }
 
-TEST_CASE("synthetic three-layer MPP: the committed Q0-1 x S0-3 fit selects S = 3; fewer pairs fail") {
+TEST_CASE("synthetic three-layer MPP: the committed Q0-1 x S0-3 fit selects S = 3 - fewer pairs fail") {
   const nlohmann::json fit = committed_fit("mpp_three_layer_fit");
   CHECK(fit["selected"]["order"] == "Q1S3");
   CHECK(fit["models"].size() == 8);

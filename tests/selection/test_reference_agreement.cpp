@@ -12,7 +12,7 @@
 using namespace admitgen;
 
 TEST_SUITE("statistical") {
-  TEST_CASE("reference file: ln Z agrees with dynesty; Q1S1 posterior covers the truth") {
+  TEST_CASE("reference file: ln Z agrees with dynesty - Q1S1 posterior covers the truth") {
     const Measurement data = read_measurement(test::sample("reference/q1s1_sigma0.01.csv"), ReadOptions{});
     FitSettings settings;  // Table 1 priors, K = 2N, 500 live points, seed 1: as the peer runs
     struct Peer {
