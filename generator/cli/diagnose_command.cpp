@@ -1,0 +1,123 @@
+#include "cli/diagnose_command.hpp"
+
+#include "codegen/coefficients.hpp"
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "data/csv_reader.hpp"
+#include "diagnosis/diagnosis_json.hpp"
+#include "output/fit_reader.hpp"
+#include "physics/material_spec.hpp"
+#include "physics/multipole_surface.hpp"
+#include "report/diagnosis_report.hpp"
+
+#include <fmt/core.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace admitgen::cli {
+namespace {
+
+using namespace admitgen::diagnosis;
+
+/// --sim names a CSV when such a file exists, a material SPEC otherwise.
+SimulatedSide simulated_side(const DiagnoseOptions& o, const ReadOptions& read, const Air& air) {
+  if (o.fit) {
+    const auto surface = multipole_from_fit(read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
+    return SimulatedSide::from_material(Material{surface}, air, "fit " + *o.fit + " (" + surface.order.name() + ", mean)");
+  }
+  if (std::filesystem::is_regular_file(*o.sim))
+    return SimulatedSide::from_table(read_measurement(*o.sim, read), "table " + *o.sim);
+  return SimulatedSide::from_material(parse_material_spec(*o.sim), air, "SPEC " + *o.sim);
+}
+
+DiagnosisRequest to_request(const DiagnoseOptions& o) {
+  if (o.sim.has_value() == o.fit.has_value())
+    throw InputError("give exactly one of --sim (CSV or material SPEC) and --fit FIT.json");
+  if (o.fs && !o.fit) throw InputError("--fs needs --fit: the pipeline stages start from a fit");
+  if (o.format_given && !o.fs) throw InputError("--format needs --fs (and --fit)");
+  const ReadOptions read = o.read.to_read_options();
+  const TubeSetup tube{o.tube_diameter, o.mic_spacing, o.mic_distance, o.temperature};
+  if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
+  DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(o.temperature)), tube, {},
+                     std::nullopt};
+  r.sampler.live = o.live;
+  r.sampler.dlogz = o.dlogz;
+  r.sampler.seed = o.seed;
+  if (o.fs) r.stages = StageRequest{read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
+  return r;
+}
+
+void print_summary(const Diagnosis& d, const std::string& path) {
+  const auto& w = d.gap.bands[d.gap.worst];
+  fmt::print("gap {:.4f} (re {:.4f}, im {:.4f}), max |d alpha| {:.4f}; worst band {:.0f} Hz ({:.0f}-{:.0f} Hz): {:.4f}; "
+             "residual {} (lag-1 z = {:.1f})\n",
+             d.gap.total, d.gap.total_re, d.gap.total_im, d.gap.delta_alpha_max, w.band.f_center, w.band.f_lo,
+             w.band.f_hi, w.gap, d.gap.whiteness.white ? "white" : "structured", d.gap.whiteness.z);
+  for (const auto& s : d.stages)
+    fmt::print("stage {:<15} gap {:.3g}  (worst band {:.0f} Hz){}\n", s.stage, s.gap.total,
+               s.gap.bands[s.gap.worst].band.f_center, s.detail.empty() ? "" : "  " + s.detail);
+  fmt::print("{:<22} {:>9} {:>9} {:>8}  parameters (posterior mean)\n", "effect", "BF [dB]", "gap after", "shrink");
+  for (const auto& e : d.identification.effects) {
+    std::string params;
+    for (const auto& p : e.parameters) params += fmt::format(" {}={:.4g}±{:.2g}", p.name, p.mean, p.std);
+    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}\n", e.name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
+               params);
+  }
+  const Verdict& v = d.verdict;
+  fmt::print("verdict: {} (BF {:.1f} dB, shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}\nwrote {}\n",
+             v.effect, v.bayes_factor_deciban, v.shrink, 100.0 * v.explained, v.band.f_center,
+             v.effect == "none" ? "" : (v.white_after ? ", residual white after" : ", structure left"), path);
+}
+
+}  // namespace
+
+void setup_diagnose_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<DiagnoseOptions>();
+  auto* sub = app.add_subcommand("diagnose", "Where the sim-to-real gap lies, which unmodelled effect causes it, how far it shrinks");
+  sub->footer(
+      "Examples:\n"
+      "  admitgen diagnose --real measured.csv --sim 'miki(sigma=10000, d=50mm)' --tube-diameter 0.1 \\\n"
+      "      --mic-spacing 0.05 --mic-distance 0.1 --out diag\n"
+      "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
+      "Decision: the effect with the largest Bayes factor against no effect if it reaches 20 dB, else none.");
+  sub->add_option("--real,-r", opt->real, "Measured admittance (CSV, read with the data options)")->required();
+  auto* sim = sub->add_option("--sim,-s", opt->sim, "Simulated admittance: a CSV (same data options) or a material SPEC");
+  auto* fit = sub->add_option("--fit", opt->fit, "fit.json: its selected model is the simulated side");
+  sim->excludes(fit);
+  sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
+  sub->add_option("--fs", opt->fs, "Sample rate [Hz] of the pipeline stages (with --fit)");
+  sub->add_option("--format", opt->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
+  add_data_options(*sub, opt->read);
+  sub->add_option("--tube-diameter", opt->tube_diameter, "Tube diameter d [m] (edge_gap, chain effects)");
+  sub->add_option("--mic-spacing", opt->mic_spacing, "Microphone spacing s [m] (chain effects)");
+  sub->add_option("--mic-distance", opt->mic_distance, "Sample face to the farther microphone x1 [m] (chain effects)");
+  sub->add_option("--temperature", opt->temperature, "Air temperature [C]")->capture_default_str();
+  sub->add_option("--live", opt->live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
+  sub->add_option("--dlogz", opt->dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
+  sub->add_option("--seed", opt->seed, "Random seed (each effect derives its own stream)")->capture_default_str();
+  sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
+  sub->callback([opt, sub, &exit_code] {
+    opt->format_given = sub->count("--format") > 0;
+    exit_code = run_diagnose_command(*opt);
+  });
+}
+
+int run_diagnose_command(const DiagnoseOptions& o) {
+  const DiagnosisRequest request = to_request(o);
+  ensure_writable_directory(o.out);
+  const Diagnosis d = run_diagnosis(request);
+  const std::string path = (std::filesystem::path(o.out) / "diagnosis.json").string();
+  write_file_atomically(path, diagnosis_text(d));
+  report::write_diagnosis_report(o.out, diagnosis_json(d));
+  if (!o.quiet) {
+    for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
+    print_summary(d, path);
+  }
+  // contract.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an
+  // identified cause (the verdict names an effect, Bayes factor >= 20 dB); `none` (the gap is noise or
+  // no candidate explains it decisively) exits 0. diagnosis.json is written either way.
+  return d.verdict.effect == "none" ? 0 : 1;
+}
+
+}  // namespace admitgen::cli

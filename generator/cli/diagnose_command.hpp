@@ -1,0 +1,42 @@
+/// @file
+/// `admitgen diagnose --real DATA.csv (--sim SIM.csv | --sim SPEC | --fit FIT.json) --out DIR
+/// [--fs HZ --format q31] [--tube-diameter M --mic-spacing M --mic-distance M] [--temperature C]`:
+/// where the sim-to-real gap lies, which pipeline stage adds it, which unmodelled effect causes it
+/// and how far it shrinks (diagnosis/diagnosis.hpp). Writes DIR/diagnosis.json and prints a summary.
+/// Exit 0 when the verdict is `none`, 1 when it names an effect (a gap with an identified cause;
+/// diagnosis.json is written in both cases), 2 on bad input (nothing written).
+#pragma once
+
+#include "cli/data_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace admitgen::cli {
+
+struct DiagnoseOptions {
+  std::string real;
+  std::optional<std::string> sim;  ///< a CSV path if such a file exists, else a material SPEC
+  std::optional<std::string> fit;
+  std::string out;
+  std::optional<double> fs;
+  std::string format = "q31";
+  bool format_given = false;
+  DataOptions read;  ///< for --real and a --sim CSV alike
+  std::optional<double> tube_diameter;
+  std::optional<double> mic_spacing;
+  std::optional<double> mic_distance;
+  double temperature = 20.0;
+  int live = 100;
+  double dlogz = 0.1;
+  std::uint64_t seed = 1;
+  bool quiet = false;
+};
+
+void setup_diagnose_command(CLI::App& app, int& exit_code);
+int run_diagnose_command(const DiagnoseOptions& options);
+
+}  // namespace admitgen::cli

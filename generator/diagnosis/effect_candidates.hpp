@@ -1,0 +1,71 @@
+/// @file
+/// The effects `diagnose` tries, each as a model of the measurement built on the simulated side:
+/// y_model(f; ϑ) = T_e[y_sim](f; ϑ), with ϑ free under a physically plausible prior. The contract
+/// effects (contract.md "Effects") use the physics layer's own closed forms and chain
+/// (physics/effects.hpp, physics/two_microphone.hpp), so `diagnose` tests exactly what `synth` makes.
+///
+/// Priors (ranges a real tube measurement can plausibly show; "log" = log-uniform):
+///
+/// | effect | parameter | prior | applies when |
+/// |---|---|---|---|
+/// | reference_plane | delta_m | uniform [−10, 10] mm | always (closed form R e^{−2jkδ}) |
+/// | mic_spacing | delta_m | uniform [−3, 3] mm | tube geometry given |
+/// | mic_mismatch | gain, phase_deg | uniform [−0.1, 0.1], uniform [−5, 5]° | tube geometry given |
+/// | temperature | delta_k | uniform [−10, 10] K | tube geometry given |
+/// | tube_losses | — | Kirchhoff losses of diameter d (no free parameter) | tube geometry given |
+/// | edge_gap | width_m, depth_m | log [0.05, 3] mm, log [5, 200] mm | tube diameter given |
+/// | frame_resonance | f0_hz, q, y_peak | log [f_min, f_max] of the data, log [1, 100], log [1e−3, 3] | always |
+/// | fractional_order | c_plus, c_minus (f_ref_hz fixed) | uniform [0, 0.5] each; f_ref = √(f_min f_max) | always |
+/// | air_gap | gap_m | log [0.1, 30] mm | the simulated side is a layered material SPEC |
+/// | heteroscedastic_noise | scale | uniform [0, 0.5] | tube geometry given, no sin ks = 0 in band |
+/// | frequency_scale (own) | ratio | log [0.8, 1.25], narrowed to where a table is known | ≥ ±2 % of it covered |
+///
+/// frequency_scale, y' (f) = y_sim(f · ratio), is admitgen's own addition: a material whose thickness,
+/// stiffness or flow resistivity differs from the simulated one shifts its λ/4 resonances (physics.md
+/// §5.1 i: "derivative-shaped" residual ∝ ω dY/dω); it applies to any simulated side.
+#pragma once
+
+#include "diagnosis/simulated_side.hpp"
+#include "physics/synthetic_measurement.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace admitgen::diagnosis {
+
+struct ParameterPrior {
+  enum class Shape { uniform, log_uniform };
+  std::string name;
+  Shape shape = Shape::uniform;
+  double lo = 0.0;
+  double hi = 1.0;
+
+  /// θ from u ∈ [0, 1]: lo + u (hi − lo), or lo (hi/lo)^u.
+  double transform(double u) const;
+  /// e.g. "uniform [-0.01, 0.01]".
+  std::string describe() const;
+};
+
+/// What the measurement would show under an effect: y, and the relative noise std s_i of each point
+/// (empty: the same at every point).
+struct EffectPrediction {
+  Eigen::ArrayXcd y;
+  Eigen::ArrayXd noise_shape;
+};
+
+struct EffectCandidate {
+  std::string name;
+  std::vector<ParameterPrior> priors;
+  std::vector<std::pair<std::string, double>> fixed;  ///< parameters held fixed, e.g. f_ref_hz
+  std::function<EffectPrediction(const double* theta)> predict;
+};
+
+/// Every effect that applies to this simulated side, frequencies and tube (table above), in the
+/// table's order.
+std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const SimulatedSide& sim,
+                                               const TubeSetup& tube);
+
+}  // namespace admitgen::diagnosis

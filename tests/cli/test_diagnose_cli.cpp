@@ -1,0 +1,104 @@
+// `admitgen diagnose` end to end: the verdict on a synthetic frame resonance, byte-identical reruns,
+// exit code 1 when the verdict names an effect and 0 when it is `none` (contract.md: 1 = a diagnosis
+// found a violation), exit code 2 and no output on bad input.
+#include "test_support.hpp"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace admitgen::test {
+namespace {
+
+const std::string kMaterial = "'miki(sigma=10000, d=50mm)'";
+const std::string kTube = " --tube-diameter 0.1 --mic-spacing 0.05 --mic-distance 0.1";
+
+std::string make_real(const std::string& dir) {
+  const std::string csv = dir + "/real.csv";
+  const auto r = run_admitgen("synth --material " + kMaterial +
+                              " --effect frame_resonance:f0_hz=700,q=8,y_peak=0.1 --noise 0.003 --band 200:1600 "
+                              "--points 60 --seed 4 -q --out " + csv + kTube);
+  REQUIRE(r.exit_code == 0);
+  return csv;
+}
+
+}  // namespace
+
+TEST_CASE("diagnose CLI: finds a frame resonance, writes diagnosis.json, reruns byte-identically") {
+  const std::string dir = scratch_dir("diagnose_cli");
+  const std::string real = make_real(dir);
+  const std::string args = "diagnose --real " + real + " --sim " + kMaterial + kTube + " --live 40 --out ";
+  const auto first = run_admitgen(args + dir + "/a");
+  REQUIRE(first.exit_code == 1);  // the verdict names an effect: a gap with an identified cause
+  CHECK(first.output.find("verdict: frame_resonance") != std::string::npos);
+  const auto second = run_admitgen(args + dir + "/b -q");
+  REQUIRE(second.exit_code == 1);
+  const std::string a = read_text(dir + "/a/diagnosis.json");
+  CHECK(a == read_text(dir + "/b/diagnosis.json"));
+  const auto j = nlohmann::json::parse(a);
+  CHECK(j["schema"] == "admitgen.diagnosis/1");
+  CHECK(j["verdict"]["effect"] == "frame_resonance");
+  CHECK(j["effects"][0]["effect"] == "frame_resonance");
+  CHECK(j["effects"][0]["parameters"]["f0_hz"].get<double>() == doctest::Approx(700.0).epsilon(0.02));
+  CHECK(j["gap"]["bands"].size() > 5);
+  CHECK(j["stages"].empty());
+}
+
+TEST_CASE("diagnose CLI: the simulated side as a CSV table") {
+  const std::string dir = scratch_dir("diagnose_cli_table");
+  const std::string real = make_real(dir);
+  REQUIRE(run_admitgen("synth --material " + kMaterial + " --band 150:2000 --points 80 -q --out " + dir + "/sim.csv")
+              .exit_code == 0);
+  const auto r = run_admitgen("diagnose --real " + real + " --sim " + dir + "/sim.csv --live 40 -q --out " + dir + "/d");
+  REQUIRE(r.exit_code == 1);
+  const auto j = nlohmann::json::parse(read_text(dir + "/d/diagnosis.json"));
+  CHECK(j["verdict"]["effect"] == "frame_resonance");
+}
+
+TEST_CASE("diagnose CLI: bad input exits 2 and writes nothing") {
+  const std::string dir = scratch_dir("diagnose_cli_bad");
+  const std::string real = make_real(dir);
+  const std::string out = " --out " + dir + "/out";
+  const std::vector<std::string> bad{
+      "diagnose --real " + real + out,                                                   // neither --sim nor --fit
+      "diagnose --real " + real + " --sim 'miki(sigma=10000)'" + out,                    // incomplete SPEC
+      "diagnose --real " + dir + "/missing.csv --sim " + kMaterial + out,                // missing file
+      "diagnose --real " + real + " --sim " + kMaterial + " --fs 48000" + out,           // --fs without --fit
+      "diagnose --real " + real + " --sim " + kMaterial + " --tube-diameter 0.1" + out,  // partial geometry
+      "diagnose --real " + real + " --fit " + dir + "/real.csv" + out,                   // not a fit.json
+  };
+  for (const auto& args : bad) {
+    CAPTURE(args);
+    const auto r = run_admitgen(args);
+    CHECK(r.exit_code == 2);
+    CHECK_FALSE(std::filesystem::exists(dir + "/out/diagnosis.json"));
+  }
+}
+
+TEST_CASE("diagnose CLI: --fit with --fs reports the pipeline stages") {
+  const std::string dir = scratch_dir("diagnose_cli_stages");
+  const auto r = run_admitgen("diagnose --real " + sample("reference/q1s1_sigma0.01.csv") + " --fit " +
+                              sample("fits/q1s1_reference.json") + " --fs 48000 --format q15 --live 30 -q --out " + dir);
+  const auto j = nlohmann::json::parse(read_text(dir + "/diagnosis.json"));
+  CHECK(r.exit_code == (j["verdict"]["effect"] == "none" ? 0 : 1));
+  REQUIRE(j["stages"].size() == 4);
+  CHECK(j["stages"][0]["stage"] == "fit");
+  CHECK(j["stages"][2]["stage"] == "quantization");
+  CHECK(j["stages"][3]["stage"] == "simulation");
+  CHECK(j["stages"][3]["detail"].get<std::string>().find("1D FDTD tube") != std::string::npos);
+}
+
+TEST_CASE("diagnose CLI: a verdict of none exits 0") {
+  // The measured side is the simulated material itself plus white noise (no effect): verdict none.
+  const std::string dir = scratch_dir("diagnose_cli_none");
+  REQUIRE(run_admitgen("synth --material " + kMaterial + " --noise 0.003 --band 200:1600 --points 60 --seed 5 -q --out " +
+                       dir + "/real.csv" + kTube)
+              .exit_code == 0);
+  const auto r = run_admitgen("diagnose --real " + dir + "/real.csv --sim " + kMaterial + kTube + " --live 40 -q --out " + dir + "/d");
+  const auto j = nlohmann::json::parse(read_text(dir + "/d/diagnosis.json"));
+  CHECK(j["verdict"]["effect"] == "none");
+  CHECK(r.exit_code == 0);
+}
+
+}  // namespace admitgen::test

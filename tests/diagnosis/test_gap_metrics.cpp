@@ -1,0 +1,86 @@
+// Gap metrics, one-third-octave bands, residual whiteness, the effect likelihood and the verdict rule.
+#include "diagnosis/effect_likelihood.hpp"
+#include "diagnosis/gap_metrics.hpp"
+#include "diagnosis/verdict.hpp"
+#include "physics/noise.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+namespace admitgen::test {
+
+using namespace admitgen::diagnosis;
+
+TEST_CASE("one-third-octave bands: IEC 61260 base-10 centres and edges, only covered bands") {
+  const auto b = third_octave_band(0);
+  CHECK(b.f_center == doctest::Approx(1000.0));
+  CHECK(b.f_hi / b.f_lo == doctest::Approx(std::pow(10.0, 0.1)));
+  CHECK(third_octave_band(-10).f_center == doctest::Approx(100.0));
+  CHECK(third_octave_band(3).f_center == doctest::Approx(1995.26).epsilon(1e-5));
+  Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(200, 100.0, 2000.0);
+  const auto bands = covered_bands(f);
+  REQUIRE(bands.size() == 14);  // 100, 125, …, 1995 Hz
+  CHECK(bands.front().f_center == doctest::Approx(100.0));
+  Eigen::Index points = 0;
+  for (const auto& band : bands) {
+    for (Eigen::Index i = band.first; i < band.first + band.count; ++i) CHECK(band.contains(f[i]));
+    points += band.count;
+  }
+  CHECK(points <= f.size());
+}
+
+TEST_CASE("gap: relative rms error per band, Re/Im split, worst band where the error is") {
+  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(300, 100.0, 2000.0);
+  const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(f.size(), {0.5, 0.2});
+  Eigen::ArrayXcd model = y;
+  for (Eigen::Index i = 0; i < f.size(); ++i)
+    if (f[i] > 600 && f[i] < 700) model[i] += std::complex<double>(0.03, 0.04);  // |Δ| = 0.05 in the 631 Hz band
+  const Gap g = measure_gap(f, y, model, rms_level(y));
+  CHECK(g.bands[g.worst].band.contains(650.0));
+  CHECK(g.total * g.total == doctest::Approx(g.total_re * g.total_re + g.total_im * g.total_im));
+  CHECK(g.total_im > g.total_re);
+  CHECK(measure_gap(f, y, y, rms_level(y)).total == 0.0);
+}
+
+TEST_CASE("whiteness: noise is white, a smooth residual is not") {
+  Rng rng(3);
+  const Eigen::ArrayXcd noise = complex_gaussian_noise(Eigen::ArrayXd::Constant(400, 1.0), rng);
+  CHECK(residual_whiteness(noise).white);
+  Eigen::ArrayXcd smooth(400);
+  for (int i = 0; i < 400; ++i) smooth[i] = std::polar(1.0, 0.05 * i);
+  const Whiteness w = residual_whiteness(smooth);
+  CHECK_FALSE(w.white);
+  CHECK(w.lag1 > 0.9);
+}
+
+TEST_CASE("effect likelihood: marginal Gaussian prefers the true model - noise shape enters with its log") {
+  Rng rng(5);
+  const Eigen::ArrayXcd truth = Eigen::ArrayXcd::Constant(100, {0.4, 0.1});
+  const Eigen::ArrayXcd data = truth + complex_gaussian_noise(Eigen::ArrayXd::Constant(100, 0.01), rng);
+  const EffectLikelihood l(data);
+  CHECK(l({truth, {}}) > l({truth * 1.02, {}}));
+  // A constant noise shape s only rescales σ, which is marginalised with a scale-invariant prior: ln L unchanged.
+  CHECK(l({truth, Eigen::ArrayXd::Constant(100, 3.0)}) == doctest::Approx(l({truth, {}})));
+}
+
+TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none") {
+  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
+  const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
+  const Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
+  Identification id;
+  EffectResult a;
+  a.name = "temperature";
+  a.bayes_factor_deciban = 19.0;
+  a.shrink = 4.0;
+  a.gap_after = measure_gap(f, y, y, rms_level(y));
+  id.effects = {a};
+  CHECK(decide(gap, id).effect == "none");
+  id.effects[0].bayes_factor_deciban = 25.0;
+  const Verdict v = decide(gap, id);
+  CHECK(v.effect == "temperature");
+  CHECK(v.shrink == 4.0);
+  CHECK(decide(gap, Identification{}).effect == "none");
+}
+
+}  // namespace admitgen::test
