@@ -5,6 +5,7 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "output/fit_json.hpp"
+#include "report/fit_report.hpp"
 #include "selection/fit.hpp"
 
 #include <fmt/core.h>
@@ -55,7 +56,8 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
   sub->footer(
       "Example:\n  admitgen fit samples/basotect_tuberlin/rect_5cm.csv --columns f,_,_,_,_,re,im,_ "
       "--qmax 2 --smax 2 --out out/rect_5cm\n"
-      "Writes OUT/fit.json (schema admitgen.fit/1) and prints the evidence table.");
+      "Writes OUT/fit.json (schema admitgen.fit/1) and OUT/report.html (self-contained, with figures) and prints\n"
+      "the evidence table.");
   sub->add_option("data", opt->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
   sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
   add_data_options(*sub, opt->read);
@@ -100,6 +102,7 @@ int run_fit_command(const FitOptions& o) {
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
   write_file_atomically(path, fit_to_json(data, read, settings, fit).dump(2) + "\n");
+  report::write_fit_report(o.out, fit_to_json(data, read, settings, fit), data);
   if (!o.quiet) {
     print_summary(fit);
     for (const auto& w : fit.warnings) fmt::print(stderr, "warning: {}\n", w);
