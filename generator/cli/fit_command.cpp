@@ -101,8 +101,9 @@ int run_fit_command(const FitOptions& o) {
                                data.f_hz[data.size() - 1], o.qmax, o.smax));
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
-  write_file_atomically(path, fit_to_json(data, read, settings, fit).dump(2) + "\n");
-  report::write_fit_report(o.out, fit_to_json(data, read, settings, fit), data);
+  const auto json = fit_to_json(data, read, settings, fit);
+  write_file_atomically(path, json.dump(2) + "\n");
+  report::write_fit_report(o.out, json, data);
   if (!o.quiet) {
     print_summary(fit);
     for (const auto& w : fit.warnings) fmt::print(stderr, "warning: {}\n", w);

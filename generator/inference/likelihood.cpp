@@ -19,12 +19,16 @@ std::string describe(DataCount count) {
                                            : "marginal-gaussian, K = N (eq. 10 as the paper's text reads)";
 }
 
+int real_data_count(DataCount count, Eigen::Index points) {
+  return static_cast<int>(count == DataCount::two_per_point ? 2 * points : points);
+}
+
 Likelihood::Likelihood(const Measurement& data, const Order& order, DataCount count)
     : order_(order),
       grid_(data.omega()),
       d_re_(data.y.real()),
       d_im_(data.y.imag()),
-      k_(static_cast<int>(count == DataCount::two_per_point ? 2 * data.size() : data.size())),
+      k_(real_data_count(count, data.size())),
       constant_(std::lgamma(0.5 * k_) - std::log(2.0) - 0.5 * k_ * std::log(EIGEN_PI)) {}
 
 double Likelihood::sum_squared_residual(const double* theta) const {

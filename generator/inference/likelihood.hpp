@@ -22,6 +22,8 @@ enum class DataCount { two_per_point, one_per_point };
 
 DataCount parse_data_count(const std::string& text);  ///< "2N" | "N"
 std::string describe(DataCount count);                 ///< e.g. "marginal-gaussian, K = 2N"
+/// K, the number of real data in `points` complex points under `count`.
+int real_data_count(DataCount count, Eigen::Index points);
 
 /// Holds the data and work buffers: one instance per thread (operator() is not reentrant).
 class Likelihood {

@@ -47,7 +47,7 @@ Json input_json(const Measurement& data, const ReadOptions& read) {
 }
 
 Json settings_json(const FitSettings& s, std::size_t n_points) {
-  const int k = static_cast<int>(s.data_count == DataCount::two_per_point ? 2 * n_points : n_points);
+  const int k = real_data_count(s.data_count, static_cast<Eigen::Index>(n_points));
   Json j{{"live", s.sampler.live},
               {"seed", s.sampler.seed},
               {"priors", {{"source", s.priors_origin}, {"symmetry_reduced", s.reduce_symmetry}, {"ranges", s.priors.to_json()}}},

@@ -115,7 +115,7 @@ class GridProgress {
 /// The largest order of the grid (Q = qmax, S = smax) must have fewer parameters than real data.
 void check_constrainable(const Measurement& data, const FitSettings& settings) {
   const Order largest(settings.qmax, settings.smax);
-  const int k = static_cast<int>(settings.data_count == DataCount::two_per_point ? 2 * data.size() : data.size());
+  const int k = real_data_count(settings.data_count, data.size());
   if (k < largest.dim() + 2)
     throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
                                  "--qmax/--smax or supply more frequency points",
@@ -124,22 +124,32 @@ void check_constrainable(const Measurement& data, const FitSettings& settings) {
 
 }  // namespace
 
+std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, double tolerance) {
+  std::vector<MissedMode> missed;
+  for (std::size_t big = 0; big < models.size(); ++big) {
+    const ModelResult& b = models[big];
+    std::size_t worst = models.size();
+    for (std::size_t small = 0; small < models.size(); ++small) {
+      const ModelResult& m = models[small];
+      const bool contained = m.order != b.order && m.order.q() <= b.order.q() && m.order.s() <= b.order.s();
+      if (contained && m.run.max_log_likelihood > b.run.max_log_likelihood + tolerance &&
+          (worst == models.size() || m.run.max_log_likelihood > models[worst].run.max_log_likelihood))
+        worst = small;
+    }
+    if (worst != models.size()) missed.push_back({big, worst});
+  }
+  return missed;
+}
+
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance) {
   std::vector<std::string> warnings;
-  for (const auto& big : models) {
-    const ModelResult* worst = nullptr;
-    for (const auto& small : models) {
-      const bool contained = small.order != big.order && small.order.q() <= big.order.q() && small.order.s() <= big.order.s();
-      if (contained && small.run.max_log_likelihood > big.run.max_log_likelihood + tolerance &&
-          (worst == nullptr || small.run.max_log_likelihood > worst->run.max_log_likelihood))
-        worst = &small;
-    }
-    if (worst != nullptr)
-      warnings.push_back(fmt::format(
-          "{}: best ln L {:.1f} is below {:.1f} of the nested order {}; the sampler missed a mode of {}, whose ln Z is "
-          "underestimated (rerun with more --live points)",
-          big.order.name(), big.run.max_log_likelihood, worst->run.max_log_likelihood, worst->order.name(),
-          big.order.name()));
+  for (const MissedMode& m : missed_modes(models, tolerance)) {
+    const ModelResult &big = models[m.order], &small = models[m.contained];
+    warnings.push_back(fmt::format(
+        "{}: best ln L {:.1f} is below {:.1f} of the nested order {}; the sampler missed a mode of {}, whose ln Z is "
+        "underestimated (rerun with more --live points)",
+        big.order.name(), big.run.max_log_likelihood, small.run.max_log_likelihood, small.order.name(),
+        big.order.name()));
   }
   return warnings;
 }
@@ -190,9 +200,7 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
   run_orders(data, settings, grid, which, 0, results, progress);
   for (int round = 1; round <= settings.missed_mode_retries; ++round) {
     which.clear();
-    for (const auto& w : missed_mode_warnings(results))
-      for (std::size_t i = 0; i < grid.size(); ++i)
-        if (w.rfind(grid[i].name() + ":", 0) == 0) which.push_back(i);
+    for (const MissedMode& m : missed_modes(results)) which.push_back(m.order);
     if (which.empty()) break;
     progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
                                  settings.sampler.live << round));

@@ -68,6 +68,12 @@ struct FitResult {
 /// model), so its best likelihood can never be lower. When a run's max ln L falls more than
 /// `tolerance` nats below that of an order it contains, that run missed the better mode: the
 /// evidence of that order is an underestimate. Returns one readable warning per such order.
+struct MissedMode {
+  std::size_t order;      ///< index into models: the run that missed a mode
+  std::size_t contained;  ///< index of the contained order with the higher best likelihood
+};
+std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, double tolerance = 2.0);
+/// The readable form of missed_modes, one warning per order.
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance = 2.0);
 
 /// Seed of the run for `order`, derived from the user seed (independent of grid and thread count).
