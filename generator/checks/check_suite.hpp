@@ -31,16 +31,18 @@ struct CheckSubject {
   double data_f_min_hz = 0.0, data_f_max_hz = 0.0;
   std::optional<codegen::EmittedHeader> header;  ///< headers only
   std::string header_text;                       ///< headers only
+  std::string note;  ///< e.g. which estimate was checked when the requested one is absent
 };
 
 /// From an emitted header's text (throws InputError if it has no readable admitgen:model block).
 CheckSubject subject_from_header(const std::string& text, const std::string& origin);
-/// From a parsed fit.json: the selected order, or `order`, posterior mean or max-likelihood point.
+/// From a parsed fit.json: the selected order, or `order`, and the estimate (a fit without a passive
+/// estimate, written by an older admitgen, is checked at its posterior mean, and `note` says so).
 CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& origin, const std::string& order,
                               Estimate estimate);
 /// Reads FILE.h or FIT.json (decided by content: JSON with schema admitgen.fit/1, else a header).
 /// Throws FileError if the file is unreadable or neither.
-CheckSubject load_subject(const std::string& path, const std::string& order = {}, Estimate estimate = Estimate::mean);
+CheckSubject load_subject(const std::string& path, const std::string& order = {}, Estimate estimate = Estimate::passive);
 
 CheckResult check_causality(const CheckSubject& subject);
 CheckResult check_discrete_stability(const CheckSubject& subject);

@@ -29,6 +29,10 @@ CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& orig
   CheckSubject s;
   s.origin = origin;
   s.kind = "fit";
+  if (estimate == Estimate::passive && !fit_has_passive_estimate(fit, order, origin)) {
+    estimate = Estimate::mean;
+    s.note = "the fit holds no passive estimate (written by an older admitgen): its posterior mean is checked";
+  }
   s.surface = multipole_from_fit(fit, order, estimate, origin);
   try {
     s.data_f_min_hz = fit.at("input").at("f_min_hz").get<double>();

@@ -16,14 +16,15 @@ void setup_check_command(CLI::App& app, int& exit_code) {
   sub->add_option("file", opt->file, "Header written by admitgen emit, or fit.json written by admitgen fit")->required();
   sub->add_flag("--json", opt->json, "Print the report as JSON (schema admitgen.check/1)");
   sub->add_option("--order", opt->order, "fit.json only: check this order (e.g. Q0S2) instead of the selected one");
-  sub->add_option("--estimate", opt->estimate, "fit.json only: posterior summary used as the parameters")
-      ->check(CLI::IsMember({"mean", "max_likelihood"}))->capture_default_str();
+  sub->add_option("--estimate", opt->estimate,
+                  "fit.json only: the parameters checked (passive estimate, posterior mean or max_likelihood sample)")
+      ->check(CLI::IsMember({"passive", "mean", "max_likelihood"}))->capture_default_str();
   sub->callback([opt, &exit_code] { exit_code = run_check_command(*opt); });
 }
 
 int run_check_command(const CheckOptions& o) {
-  const auto subject = checks::load_subject(o.file, o.order,
-                                            o.estimate == "mean" ? Estimate::mean : Estimate::max_likelihood);
+  const auto subject = checks::load_subject(o.file, o.order, parse_estimate(o.estimate));
+  if (!subject.note.empty()) fmt::print(stderr, "note: {}\n", subject.note);
   const auto report = checks::run_checks(subject);
   if (o.json)
     fmt::print("{}\n", report.to_json().dump(2));

@@ -14,7 +14,7 @@ struct CheckOptions {
   std::string file;
   bool json = false;
   std::string order;              ///< fits only: check this order instead of the selected one
-  std::string estimate = "mean";  ///< fits only: posterior summary taken as the parameters
+  std::string estimate = "passive";  ///< fits only: posterior summary taken as the parameters
 };
 
 void setup_check_command(CLI::App& app, int& exit_code);

@@ -1,11 +1,10 @@
 #include "cli/emit_command.hpp"
 
-#include "checks/check_suite.hpp"
-#include "checks/passivity.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "emit/emit.hpp"
 #include "output/fit_reader.hpp"
 
 #include <fmt/format.h>
@@ -42,8 +41,11 @@ void setup_emit_command(CLI::App& app, int& exit_code) {
   sub->add_option("--name", opt->name, "C identifier prefix of the emitted tables (default: output file stem)");
   sub->add_option("--out,-o", opt->out, "Header to write")->required();
   sub->add_option("--order", opt->order, "Emit this order of the fit (e.g. Q0S2) instead of the selected one");
-  sub->add_option("--estimate", opt->estimate, "Posterior summary used as the parameters")
-      ->check(CLI::IsMember({"mean", "max_likelihood"}))->capture_default_str();
+  sub->add_option("--estimate", opt->estimate,
+                  "Parameters to emit: passive (best sample's poles, residues refitted under Re G >= 0; certified), "
+                  "posterior mean, or max_likelihood sample. A non-passive choice is made passive by the minimal "
+                  "change of its residues, stated in the header")
+      ->check(CLI::IsMember({"passive", "mean", "max_likelihood"}))->capture_default_str();
   sub->add_option("--fir-taps", opt->fir_taps, "FIR taps of the refit (0 = fewest reaching 1e-5 relative error)")
       ->check(CLI::Range(0, 8))->capture_default_str();
   sub->add_option("--bands-json", opt->bands_json, "Also write the band absorption (octave, 1/3 octave) as JSON");
@@ -63,29 +65,22 @@ int run_emit_command(const EmitOptions& o) {
   s.format = codegen::parse_format(o.format);
   s.name = o.name.empty() ? default_name(o.out) : o.name;
   s.order = o.order;
-  s.estimate = o.estimate == "mean" ? Estimate::mean : Estimate::max_likelihood;
+  s.estimate = parse_estimate(o.estimate);
   s.fir_taps = o.fir_taps;
-  // Prefer, among the refit candidates, one whose emitted response stays passive up to Nyquist.
-  s.acceptable = [](const codegen::DiscreteModel& m) { return checks::discrete_passivity(m).passive; };
   if (!o.golden.empty() && s.format == codegen::Format::f32)
     throw InputError("--golden needs --format q31 or q15 (f32 output is not bit-exact across compilers)");
   const std::string tpl = codegen::load_template(o.templates, "admitgen_boundary.h.in");
-  const auto emission = codegen::prepare_emission(read_fit_file(o.fit), o.fit, s);
-  // Everything is computed before anything is written; each file appears whole or not at all.
-  const std::string header =
-      codegen::render_header(emission, tpl, std::filesystem::path(o.out).filename().string());
-  // The header is checked exactly as written (admitgen check on its text); a failing one is refused.
-  const auto report = checks::run_checks(checks::subject_from_header(header, o.out));
-  if (!report.passed()) {
-    std::string why;
-    for (const auto& c : report.checks)
-      for (const auto& f : c.failures) why += fmt::format("\n  {}: {}", c.name, f);
+  // Everything is computed and checked before anything is written; each file appears whole or not at all.
+  const emit::EmitResult result =
+      emit::emit(read_fit_file(o.fit), o.fit, s, tpl, std::filesystem::path(o.out).filename().string());
+  const auto& emission = result.emission;
+  const std::string& header = result.header;
+  if (!result.safe()) {
     if (!o.allow_unsafe) {
-      fmt::print(stderr, "admitgen: refusing to write {}: the filter fails admitgen check ({}){}\n"
-                         "(--allow-unsafe writes it anyway)\n", o.out, fmt::join(report.failed_checks(), ", "), why);
+      fmt::print(stderr, "admitgen: {}\n", result.refusal(o.out));
       return 1;  // a check found a violation (contract exit code 1); nothing was written
     }
-    fmt::print(stderr, "warning: --allow-unsafe: {} fails admitgen check:{}\n", o.out, why);
+    fmt::print(stderr, "warning: --allow-unsafe: {}\n", result.refusal(o.out));
   }
   const std::string bands = o.bands_json.empty() ? "" : codegen::bands_json(emission).dump(2) + "\n";
   const std::string golden = o.golden.empty() ? "" : codegen::golden_vectors(emission, o.golden_seed);
@@ -94,10 +89,13 @@ int run_emit_command(const EmitOptions& o) {
   if (!o.golden.empty()) write_file_atomically(o.golden, golden);
   if (!o.quiet) {
     for (const auto& r : emission.rates)
-      fmt::print("{} Hz: {} FIR taps, {} real, {} pairs; refit max rel. error {:.2e} (plain PLRC {:.2e}){}\n", r.fs_hz,
+      fmt::print("{} Hz: {} FIR taps, {} real, {} pairs; refit max rel. error {:.2e} (plain PLRC {:.2e}){}{}\n", r.fs_hz,
                  r.model.fir.size(), r.model.real.size(), r.model.pair.size(), r.model.refit_max_rel_error,
-                 r.model.plrc_max_rel_error, r.model.folded.empty() ? "" : "; folded " + std::to_string(r.model.folded.size()));
-    fmt::print("wrote {} ({} {}, {})\n", o.out, emission.surface.order.name(), o.format, s.name);
+                 r.model.plrc_max_rel_error, r.model.folded.empty() ? "" : "; folded " + std::to_string(r.model.folded.size()),
+                 r.model.passive_rounds == 0 ? "" : fmt::format("; refit constrained to Re H >= 0 ({} rounds)", r.model.passive_rounds));
+    for (const auto& n : emission.notes) fmt::print("note: {}\n", n);
+    fmt::print("wrote {} ({} {}, {}, {} estimate{})\n", o.out, emission.surface.order.name(), o.format, s.name,
+               estimate_name(emission.estimate), result.safe() ? "; passes admitgen check" : "; UNSAFE");
   }
   return 0;
 }

@@ -19,7 +19,7 @@ struct EmitOptions {
   std::string name;  ///< default: the output file's stem, made a C identifier
   std::string out;
   std::string order;
-  std::string estimate = "mean";
+  std::string estimate = "passive";
   int fir_taps = 0;
   std::string bands_json;
   std::string golden;

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
+#include "numerics/least_squares_inequality.hpp"
 
 #include <Eigen/QR>
 #include <fmt/format.h>
@@ -21,6 +22,9 @@ constexpr double kOutOfBandWeight = 1e-5;
 /// A refit whose coefficients sum (in magnitude) beyond this multiple of max|G| is rejected: it trades
 /// FIR taps against a fast pole's near-FIR response (ill-conditioned) and would waste fixed-point range.
 constexpr double kMaxCoefficientGrowth = 16.0;
+/// Constraint-generation rounds of the passive refit (each adds the violations the certifier found; a
+/// handful suffice in practice, see docs/passivity.md).
+constexpr int kMaxPassiveRounds = 30;
 
 /// 1 − e^{−jθ} without cancellation: 2 sin²(θ/2) + j sin θ.
 cplx one_minus_unit(double theta) {
@@ -137,10 +141,8 @@ namespace {
 /// refit error below half the incumbent's (the margin keeps the simpler candidate on near-ties).
 bool better(const DiscreteModel& candidate, const DiscreteModel* incumbent, const DiscretiseOptions& options) {
   if (incumbent == nullptr) return true;
-  if (options.acceptable) {
-    const bool ok = options.acceptable(candidate), incumbent_ok = options.acceptable(*incumbent);
-    if (ok != incumbent_ok) return ok;
-  }
+  if (options.passivity_violations && candidate.passive_certified != incumbent->passive_certified)
+    return candidate.passive_certified;
   return candidate.refit_max_rel_error < 0.5 * incumbent->refit_max_rel_error;
 }
 
@@ -246,24 +248,46 @@ DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, doubl
     m.plrc_max_rel_error = worst;
   }
 
-  // Weighted linear least squares for [d_0..d_{L-1}, c_q, (c_r, c_i)_s]; stacked real/imaginary rows.
+  // H is linear in x = [d_0..d_{L-1}, c_q, (c_r, c_i)_s]: H(e^{jθ}) = Σ_j x_j φ_j(θ).
   const int n_terms = static_cast<int>(m.real.size() + 2 * m.pair.size());
+  auto basis = [](double th, int taps, const DiscreteModel& d) {
+    std::vector<cplx> phi;
+    for (int k = 0; k < taps; ++k) phi.push_back(std::polar(1.0, -double(k) * th));
+    for (const auto& r : d.real) phi.push_back(r.eps * resolvent(-r.eps, th));
+    for (const auto& p : d.pair) {
+      const cplx dl(p.e_r, p.p_i);
+      const cplx u1 = p.g * resolvent(dl, th), u2 = p.g * resolvent(std::conj(dl), th);
+      phi.push_back(u1 + u2);
+      phi.push_back(cplx(0.0, 1.0) * (u1 - u2));
+    }
+    return phi;
+  };
+  auto assign = [](const Eigen::VectorXd& x, int taps, DiscreteModel& out) {
+    out.fir.assign(x.data(), x.data() + taps);
+    int j = taps;
+    for (auto& r : out.real) r.c = x[j++];
+    for (auto& p : out.pair) {
+      p.c = cplx(x[j], x[j + 1]);
+      j += 2;
+    }
+  };
+  double g_data_max = 0.0;
+  for (std::size_t i = 0; i < n_data; ++i) g_data_max = std::max(g_data_max, std::abs(g[static_cast<Eigen::Index>(i)]));
+  // Constraint grid for Re H ≥ margin: θ = 0 and π, log-spaced from 1e-5 fs and linear up to Nyquist,
+  // and the data frequencies (Re H varies on the scale of the poles, which these resolve).
+  std::vector<double> passive_grid_hz{0.0, 0.5 * fs_hz};
+  for (int i = 0; i < 160; ++i) passive_grid_hz.push_back(1e-5 * fs_hz * std::pow(0.5 / 1e-5, i / 159.0));
+  for (int i = 1; i < 64; ++i) passive_grid_hz.push_back(0.5 * fs_hz * i / 64.0);
+  passive_grid_hz.insert(passive_grid_hz.end(), data_f_hz.begin(), data_f_hz.end());
+
+  // Weighted linear least squares for x; stacked real/imaginary rows.
   auto fit_with = [&](int taps, DiscreteModel& out) {
     const int cols = taps + n_terms;
     const Eigen::Index rows = static_cast<Eigen::Index>(2 * f.size());
     Eigen::MatrixXd a(rows, cols);
     Eigen::VectorXd b(rows);
     for (std::size_t i = 0; i < f.size(); ++i) {
-      const double th = omega[static_cast<Eigen::Index>(i)] * t;
-      std::vector<cplx> phi;
-      for (int k = 0; k < taps; ++k) phi.push_back(std::polar(1.0, -double(k) * th));
-      for (const auto& r : out.real) phi.push_back(r.eps * resolvent(-r.eps, th));
-      for (const auto& p : out.pair) {
-        const cplx d(p.e_r, p.p_i);
-        const cplx u1 = p.g * resolvent(d, th), u2 = p.g * resolvent(std::conj(d), th);
-        phi.push_back(u1 + u2);
-        phi.push_back(cplx(0.0, 1.0) * (u1 - u2));
-      }
+      const auto phi = basis(omega[static_cast<Eigen::Index>(i)] * t, taps, out);
       const Eigen::Index r0 = static_cast<Eigen::Index>(2 * i);
       for (int j = 0; j < cols; ++j) {
         a(r0, j) = w[i] * phi[static_cast<std::size_t>(j)].real();
@@ -273,13 +297,26 @@ DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, doubl
       b[r0 + 1] = w[i] * g[static_cast<Eigen::Index>(i)].imag();
     }
     const Eigen::VectorXd scale = a.colwise().norm().transpose().cwiseMax(1e-300);
-    const Eigen::VectorXd x = (a * scale.cwiseInverse().asDiagonal()).colPivHouseholderQr().solve(b).cwiseQuotient(scale);
-    out.fir.assign(x.data(), x.data() + taps);
-    int j = taps;
-    for (auto& r : out.real) r.c = x[j++];
-    for (auto& p : out.pair) {
-      p.c = cplx(x[j], x[j + 1]);
-      j += 2;
+    assign((a * scale.cwiseInverse().asDiagonal()).colPivHouseholderQr().solve(b).cwiseQuotient(scale), taps, out);
+    if (options.passivity_violations) {
+      // Constraint generation: solve under Re H ≥ δ on the grid plus every violation found, re-certify.
+      std::vector<double> where = passive_grid_hz, bad = options.passivity_violations(out);
+      out.passive_rounds = 0;
+      for (int round = 1; !bad.empty() && round <= kMaxPassiveRounds; ++round) {
+        where.insert(where.end(), bad.begin(), bad.end());
+        Eigen::MatrixXd c(static_cast<Eigen::Index>(where.size()), cols);
+        for (std::size_t i = 0; i < where.size(); ++i) {
+          const auto phi = basis(2.0 * kPi * where[i] * t, taps, out);
+          for (int j = 0; j < cols; ++j) c(static_cast<Eigen::Index>(i), j) = phi[static_cast<std::size_t>(j)].real();
+        }
+        const auto sol = numerics::least_squares_inequality(
+            a, b, c, Eigen::VectorXd::Constant(c.rows(), options.passive_margin * g_data_max));
+        if (!sol.feasible) break;
+        assign(sol.x, taps, out);
+        out.passive_rounds = round;
+        bad = options.passivity_violations(out);
+      }
+      out.passive_certified = bad.empty();
     }
     double worst = 0.0;
     for (std::size_t i = 0; i < n_data; ++i) {
@@ -308,7 +345,8 @@ DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, doubl
     fit_with(taps, trial);
     if (taps > 1 && coefficient_sum(trial) > kMaxCoefficientGrowth * g_max) continue;
     if (better(trial, taps == 1 ? nullptr : &best, options)) best = trial;
-    if (best.refit_max_rel_error <= options.target_rel_error && (!options.acceptable || options.acceptable(best))) break;
+    if (best.refit_max_rel_error <= options.target_rel_error && (!options.passivity_violations || best.passive_certified))
+      break;
   }
   return best;
 }

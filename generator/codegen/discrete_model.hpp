@@ -57,6 +57,8 @@ struct DiscreteModel {
   std::vector<std::string> folded;  ///< terms folded into the FIR path, e.g. "lambda_2 = 9.1e6 1/s"
   double refit_max_rel_error = 0.0;  ///< max |H − G|/|G| at the data frequencies after the refit
   double plrc_max_rel_error = 0.0;   ///< the same for plain PLRC coefficients (what the refit removed)
+  bool passive_certified = false;    ///< certified by DiscretiseOptions::passivity_violations (when given)
+  int passive_rounds = 0;            ///< constraint-generation rounds the certification took (0: none needed)
 
   /// Instantaneous gain h0 of y^n = h0 u^n + s^{n−1}.
   double h0() const;
@@ -77,10 +79,14 @@ struct DiscretiseOptions {
   /// 0.25, 0.5 and 4 (reference Q1S1 fit, pole at 9.3 kHz: folding wins at 16 and 24 kHz, keeping at 48 kHz).
   double fold_factor = 0.0;
   double target_rel_error = 1e-5;
-  /// Optional constraint on candidates (emit passes discrete passivity): among the fold factors and
-  /// FIR lengths tried, a candidate meeting it beats any that does not; if none meets it, the best
-  /// refit is returned and the caller's checks report why.
-  std::function<bool(const DiscreteModel&)> acceptable;
+  /// Passivity certifier (emit passes the discrete Hamiltonian test, checks/passivity.hpp): the
+  /// frequencies (Hz) of a candidate where Re H(e^{j2πf/fs}) < 0, empty when Re H ≥ 0 up to Nyquist.
+  /// When set, every refit whose least-squares solution is not certified is solved again under
+  /// Re H(e^{jθ_j}) ≥ passive_margin · max|G| on a grid of θ_j ∈ [0, π] plus every violation found
+  /// (constraint generation, docs/passivity.md), and a certified candidate beats any that is not.
+  std::function<std::vector<double>(const DiscreteModel&)> passivity_violations;
+  /// Margin of the constraints above, relative to max|G| over the data (it absorbs coefficient rounding).
+  double passive_margin = 1e-9;
   static constexpr int kMaxFirTaps = 8;
 };
 

@@ -130,6 +130,11 @@ TemplateContext rate_context(const EmittedRate& r, Format format) {
   c.values["fs"] = std::to_string(r.fs_hz);
   c.values["refit_err"] = fmt::format("{:.3g}", m.refit_max_rel_error);
   c.values["plrc_err"] = fmt::format("{:.3g}", m.plrc_max_rel_error);
+  c.values["passive_note"] =
+      !m.passive_certified ? "not certified by the generator (see admitgen check)"
+      : m.passive_rounds == 0 ? "Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive"
+                              : fmt::format("Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); refit constrained to "
+                                            "Re H >= 0, {} constraint round(s)", m.passive_rounds);
   c.values["n_fir"] = std::to_string(m.fir.size());
   c.values["n_real"] = std::to_string(m.real.size());
   c.values["n_pair"] = std::to_string(m.pair.size());
@@ -214,9 +219,8 @@ DiscreteModel model_from_tables(const Json& j, double fs) {
   return m;
 }
 
-}  // namespace
-
-Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings) {
+/// Rates integral in [1 kHz, 1 MHz] and distinct; the name a C identifier.
+void validate(const EmitSettings& settings) {
   if (!std::regex_match(settings.name, std::regex("[A-Za-z_][A-Za-z0-9_]{0,63}")))
     throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, '_'; not starting with a digit)",
                                  settings.name));
@@ -227,8 +231,13 @@ Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path
       throw InputError(fmt::format("--fs {:g}: sample rates must be whole numbers of Hz in [1000, 1000000]", fs));
     if (!seen.insert(static_cast<int>(fs)).second) throw InputError(fmt::format("--fs {:g} is given twice", fs));
   }
-  Emission e;
-  e.settings = settings;
+}
+
+}  // namespace
+
+EmissionSource read_emission_source(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings) {
+  EmissionSource e;
+  e.estimate = settings.estimate;
   e.surface = multipole_from_fit(fit, settings.order, settings.estimate, fit_path);
   try {
     e.fit_version = fit.value("version", std::string("unknown"));
@@ -240,9 +249,18 @@ Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path
   }
   const std::size_t slash = fit_path.find_last_of('/');
   e.fit_name = slash == std::string::npos ? fit_path : fit_path.substr(slash + 1);
+  return e;
+}
+
+Emission prepare_emission(const EmissionSource& source, const EmitSettings& settings) {
+  validate(settings);
+  Emission e;
+  static_cast<EmissionSource&>(e) = source;
+  e.settings = settings;
   DiscretiseOptions options;
   options.fir_taps = settings.fir_taps;
-  options.acceptable = settings.acceptable;
+  options.passivity_violations = settings.passivity_violations;
+  options.passive_margin = settings.passive_margin;
   for (double fs : settings.fs_hz) {
     EmittedRate r;
     r.fs_hz = static_cast<int>(fs);
@@ -257,6 +275,11 @@ Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path
   return e;
 }
 
+Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings) {
+  validate(settings);
+  return prepare_emission(read_emission_source(fit, fit_path, settings), settings);
+}
+
 Json emission_json(const Emission& e) {
   Json rates = Json::array();
   for (const auto& r : e.rates) {
@@ -264,6 +287,8 @@ Json emission_json(const Emission& e) {
            {"method", "matched_exponential_refit"},
            {"refit_max_rel_error", r.model.refit_max_rel_error},
            {"plrc_max_rel_error", r.model.plrc_max_rel_error},
+           {"passive_certified", r.model.passive_certified},
+           {"passive_constraint_rounds", r.model.passive_rounds},
            {"folded", r.model.folded},
            {"double", double_json(r.model)}};
     j[format_name(e.settings.format)] = coefficient_json(r, e.settings.format);
@@ -277,12 +302,14 @@ Json emission_json(const Emission& e) {
               {"format", format_name(e.settings.format)},
               {"fit", {{"file", e.fit_name}, {"version", e.fit_version}, {"input_sha256", e.input_sha256}, {"seed", e.seed}}},
               {"order", e.surface.order.name()},
-              {"estimate", e.settings.estimate == Estimate::mean ? "mean" : "max_likelihood"},
+              {"estimate", estimate_name(e.estimate)},
               {"continuous", {{"names", names},
                               {"theta", std::vector<double>(e.surface.theta.data(),
                                                             e.surface.theta.data() + e.surface.theta.size())}}},
               {"data_f_min_hz", *std::min_element(e.data_f_hz.begin(), e.data_f_hz.end())},
               {"data_f_max_hz", *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end())},
+              {"notes", e.notes},
+              {"passivity_enforcement", e.enforcement},
               {"rates", rates}};
 }
 
@@ -297,7 +324,7 @@ std::string render_header(const Emission& e, const std::string& template_text, c
   }
   std::string extra;
   if (!s.order.empty()) extra += " --order " + e.surface.order.name();
-  if (s.estimate == Estimate::max_likelihood) extra += " --estimate max_likelihood";
+  if (s.estimate != Estimate::passive) extra += fmt::format(" --estimate {}", estimate_name(s.estimate));
   if (s.fir_taps > 0) extra += fmt::format(" --fir-taps {}", s.fir_taps);
   c.values = {{"file", file_name},
               {"version", kVersion},
@@ -310,7 +337,8 @@ std::string render_header(const Emission& e, const std::string& template_text, c
               {"extra_args", extra},
               {"input_sha256", e.input_sha256},
               {"order", e.surface.order.name()},
-              {"estimate", s.estimate == Estimate::mean ? "mean" : "maximum-likelihood point"},
+              {"estimate", e.estimate == Estimate::passive ? "passive estimate: best sample's poles, residues refitted under Re G >= 0"
+                           : e.estimate == Estimate::mean ? "posterior mean" : "highest-likelihood sample"},
               {"seed", std::to_string(e.seed)},
               {"fit_version", e.fit_version},
               {"points", std::to_string(e.data_f_hz.size())},
@@ -333,6 +361,8 @@ std::string render_header(const Emission& e, const std::string& template_text, c
     c.lists["params"].push_back(item({{"pname", names[static_cast<std::size_t>(i)]}, {"pvalue", dlit(e.surface.theta[i])},
                                       {"last", i + 1 == e.surface.theta.size() ? "" : ","}}));
   for (const auto& r : e.rates) c.lists["rates"].push_back(rate_context(r, s.format));
+  c.lists["notes"] = {};
+  for (const auto& n : e.notes) c.lists["notes"].push_back(item({{"text", n}}));
   c.lists["is_f32"] = pad_if(s.format == Format::f32);
   c.lists["is_fixed"] = pad_if(s.format != Format::f32);
   c.lists["octave"] = band_rows(e.octave);

@@ -27,11 +27,25 @@ struct EmitSettings {
   Format format = Format::f32;
   std::string name;   ///< C identifier prefix of everything emitted
   std::string order;  ///< empty: the fit's selected order
-  Estimate estimate = Estimate::mean;
+  Estimate estimate = Estimate::passive;
   int fir_taps = 0;   ///< 0: automatic
-  /// Constraint on the discretised model at each rate (the CLI passes discrete passivity); see
-  /// DiscretiseOptions::acceptable.
-  std::function<bool(const DiscreteModel&)> acceptable;
+  /// Passivity certifier and margin of the discrete refit at each rate (see DiscretiseOptions; the emit
+  /// pipeline, emit/emit.hpp, passes the discrete Hamiltonian test).
+  std::function<std::vector<double>(const DiscreteModel&)> passivity_violations;
+  double passive_margin = 1e-9;
+};
+
+/// The continuous model to emit and where it came from (the fit), before discretisation.
+struct EmissionSource {
+  MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
+  Estimate estimate = Estimate::passive;  ///< the estimate actually taken from the fit
+  std::string fit_name;  ///< file name of the fit (no directories: headers stay machine-independent)
+  std::string fit_version, input_sha256;
+  std::uint64_t seed = 0;
+  std::vector<double> data_f_hz;
+  /// Lines stamped into the header comment and the model block (e.g. how passivity was enforced).
+  std::vector<std::string> notes;
+  nlohmann::ordered_json enforcement;  ///< machine-readable record of a passivity enforcement (null: none)
 };
 
 struct EmittedRate {
@@ -41,19 +55,20 @@ struct EmittedRate {
   std::optional<FixedCoefficients> fixed;   ///< formats q31, q15
 };
 
-struct Emission {
+struct Emission : EmissionSource {
   EmitSettings settings;
-  std::string fit_name;  ///< file name of the fit (no directories: headers stay machine-independent)
-  std::string fit_version, input_sha256;
-  std::uint64_t seed = 0;
-  MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
-  std::vector<double> data_f_hz;
   std::vector<EmittedRate> rates;
   std::vector<BandAbsorption> octave, third_octave;
 };
 
+/// Reads the model to emit from a parsed fit.json: settings.order (empty: the selected one) and
+/// settings.estimate. Throws InputError if the fit lacks it.
+EmissionSource read_emission_source(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings);
+
 /// Validates the settings (rates integral in [1 kHz, 1 MHz], distinct; name a C identifier) and
 /// computes everything. Throws InputError on bad input.
+Emission prepare_emission(const EmissionSource& source, const EmitSettings& settings);
+/// read_emission_source, then prepare_emission.
 Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings);
 
 /// The header text from the template text (deterministic: no timestamp; byte-identical on re-run).

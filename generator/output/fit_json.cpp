@@ -64,6 +64,25 @@ Json settings_json(const FitSettings& s, std::size_t n_points) {
   return j;
 }
 
+/// The passive estimate (docs/passivity.md): parameters by name, its fit and its certificate.
+Json passive_json(const ModelResult& m) {
+  const auto& e = m.passive;
+  const auto names = m.order.parameter_names();
+  Json params = Json::object();
+  for (std::size_t i = 0; i < names.size(); ++i) params[names[i]] = e.theta[static_cast<Eigen::Index>(i)];
+  return Json{{"poles_from", passivity::PassiveEstimate::kPolesFrom},
+              {"residues", e.changed ? "refitted: least squares to the data subject to Re G >= 0 at every frequency"
+                                     : "those of the sample (already passive)"},
+              {"parameters", params},
+              {"log_likelihood", e.log_likelihood},
+              {"relative_rms_residual", e.relative_rms_residual},
+              {"delta_log_likelihood_vs_best_sample", e.log_likelihood - e.best_sample_log_likelihood},
+              {"best_sample_relative_rms_residual", e.best_sample_relative_rms_residual},
+              {"certified_passive", e.certified},
+              {"min_re_G", e.min_re},
+              {"constraint_rounds", e.rounds}};
+}
+
 Json model_json(const ModelResult& m) {
   Json j{{"order", m.order.name()},
               {"Q", m.order.q()},
@@ -77,7 +96,8 @@ Json model_json(const ModelResult& m) {
               {"iterations", m.run.iterations},
               {"stopped_by", m.run.stopped_by},
               {"seconds", m.seconds},
-              {"parameters", to_json(m.parameters)}};
+              {"parameters", to_json(m.parameters)},
+              {"passive_estimate", passive_json(m)}};
   if (m.run.log_support_fraction != 0.0) j["log_passive_prior_fraction"] = m.run.log_support_fraction;
   return j;
 }

@@ -23,7 +23,40 @@ const nlohmann::json& member(const nlohmann::json& j, const char* key, const std
   return j.at(key);
 }
 
+/// The "models" entry of `order` (empty: the selected order).
+const nlohmann::json& model_entry(const nlohmann::json& fit, const std::string& order, const std::string& origin) {
+  const std::string wanted =
+      order.empty() ? member(member(fit, "selected", origin), "order", origin).get<std::string>() : order;
+  for (const auto& m : member(fit, "models", origin))
+    if (Order::parse(member(m, "order", origin).get<std::string>()) == Order::parse(wanted)) return m;
+  throw InputError(fmt::format("{}: order {} was not fitted", origin, wanted));
+}
+
 }  // namespace
+
+Estimate parse_estimate(const std::string& text) {
+  if (text == "passive") return Estimate::passive;
+  if (text == "mean") return Estimate::mean;
+  if (text == "max_likelihood") return Estimate::max_likelihood;
+  throw InputError(fmt::format("estimate '{}' is not one of passive, mean, max_likelihood", text));
+}
+
+const char* estimate_name(Estimate estimate) {
+  switch (estimate) {
+    case Estimate::passive: return "passive";
+    case Estimate::mean: return "mean";
+    case Estimate::max_likelihood: return "max_likelihood";
+  }
+  return "?";
+}
+
+bool fit_has_passive_estimate(const nlohmann::json& fit, const std::string& order, const std::string& origin) {
+  try {
+    return model_entry(fit, order, origin).contains("passive_estimate");
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a usable fit.json ({})", origin, e.what()));
+  }
+}
 
 MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context) {
   const Order order(count_indexed(values, "A"), count_indexed(values, "B"));
@@ -52,6 +85,17 @@ MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& 
 MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string& order, Estimate estimate,
                                     const std::string& origin) {
   try {
+    if (estimate == Estimate::passive) {
+      const auto& m = model_entry(fit, order, origin);
+      if (!m.contains("passive_estimate"))
+        throw InputError(fmt::format("{}: order {} has no passive estimate (written by an older admitgen): re-run "
+                                     "admitgen fit, or choose --estimate mean or max_likelihood",
+                                     origin, m.at("order").get<std::string>()));
+      std::map<std::string, double> values;
+      for (const auto& [name, v] : member(member(m, "passive_estimate", origin), "parameters", origin).items())
+        values[name] = v.get<double>();
+      return multipole_from_parameters(values, origin);
+    }
     const std::string selected = member(member(fit, "selected", origin), "order", origin).get<std::string>();
     const nlohmann::json* parameters = &member(fit, "parameters", origin);
     if (!order.empty() && Order::parse(order) != Order::parse(selected)) {

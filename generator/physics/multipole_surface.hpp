@@ -24,8 +24,17 @@ struct MultipoleSurface {
 /// present. Throws InputError naming the missing or surplus name; `context` prefixes messages.
 MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context);
 
-/// Which posterior summary of a fit to take as θ.
-enum class Estimate { mean, max_likelihood };
+/// Which estimate of a fit to take as θ: the passive estimate (docs/passivity.md; best sample's poles,
+/// residues refitted under Re G ≥ 0), the posterior mean, or the highest-likelihood sample.
+enum class Estimate { passive, mean, max_likelihood };
+
+/// "passive" | "mean" | "max_likelihood" (throws InputError otherwise) and back.
+Estimate parse_estimate(const std::string& text);
+const char* estimate_name(Estimate estimate);
+
+/// True when the fit holds a passive estimate for `order` (empty: the selected one); fits written by
+/// older versions of admitgen do not.
+bool fit_has_passive_estimate(const nlohmann::json& fit, const std::string& order, const std::string& origin);
 
 /// The multipole of a parsed fit.json (schema admitgen.fit/1): the selected order by default, or
 /// `order` (e.g. "Q0S2") from its "models" list. Throws InputError naming `origin` if the document

@@ -37,7 +37,7 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
                          order.dim(), [&](const double* u, double* th) { transform(u, th); },
                          log_likelihood, sampler, progress,
                          [&](double* u) { transform.fold(u); }),
-                     sampler.live, 0.0, {}};
+                     sampler.live, 0.0, {}, {}};
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 0; i < result.run.size(); ++i)
       fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
@@ -154,6 +154,12 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
   return warnings;
 }
 
+Eigen::VectorXd best_sample(const ModelResult& model) {
+  Eigen::VectorXd theta(model.order.dim());
+  for (Eigen::Index i = 0; i < theta.size(); ++i) theta[i] = model.parameters[static_cast<std::size_t>(i)].max_likelihood;
+  return theta;
+}
+
 namespace {
 
 /// Runs the orders grid[i] for i in `which` on a pool of workers, largest first, writing results[i].
@@ -194,7 +200,7 @@ void run_orders(const Measurement& data, const FitSettings& settings, const std:
 FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress) {
   const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
-  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
+  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}, {}});
   std::vector<std::size_t> which(grid.size());
   std::iota(which.begin(), which.end(), std::size_t{0});
   run_orders(data, settings, grid, which, 0, results, progress);
@@ -222,6 +228,13 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
   fit.selected = settings.rule.select(log_z, buffers);
   fit.models = std::move(results);
   fit.warnings = missed_mode_warnings(fit.models);
+  for (auto& m : fit.models) m.passive = passivity::passive_estimate(data, m.order, best_sample(m), settings.data_count);
+  if (const auto d = passivity::data_passivity(data); d.negative_points > 0)
+    fit.warnings.push_back(fmt::format(
+        "the data are not passive at {} of {} points (Re y down to {:.3g}; a wall cannot return more energy than it "
+        "receives): noise on a nearly rigid sample, or a calibration error; every passive estimate is the closest "
+        "passive model to these data",
+        d.negative_points, data.size(), d.min_re));
   constexpr int kPredictiveDraws = 1000;
   fit.predictive = predictive_band(data, fit.models[fit.selected], kPredictiveDraws,
                                    derive_seed(settings.sampler.seed, 0xbadULL));

@@ -12,6 +12,7 @@
 #include "inference/posterior.hpp"
 #include "inference/priors.hpp"
 #include "model/order.hpp"
+#include "passivity/passive_estimate.hpp"
 #include "selection/selection_rule.hpp"
 
 #include <Eigen/Core>
@@ -46,6 +47,8 @@ struct ModelResult {
   int live = 0;  ///< live points of this run (more than the setting if it was re-run)
   double seconds = 0.0;
   std::vector<ParameterSummary> parameters;  ///< folded to the reduced form
+  /// Poles of the best sample, residues refitted under Re G ≥ 0 (set by run_fit; what emit uses by default).
+  passivity::PassiveEstimate passive;
 };
 
 /// Posterior predictive band at the data frequencies: 2.5 %, 50 %, 97.5 % quantiles.
@@ -84,7 +87,11 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order);
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
                       const NestedProgressFn& progress = {}, int round = 0);
 
-/// Runs the whole grid and selects. Throws InputError if the data cannot constrain the largest order.
+/// θ of the highest-likelihood sample of a run (folded), from its parameter summaries.
+Eigen::VectorXd best_sample(const ModelResult& model);
+
+/// Runs the whole grid, selects, and adds each order's passive estimate (and a warning when the data
+/// themselves are not passive at some points). Throws InputError if the data cannot constrain the largest order.
 FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress);
 
 /// Predictive band from `draws` equal-weight posterior draws (deterministic given the seed).

@@ -30,7 +30,7 @@ TEST_CASE("selection: best evidence vs cheapest within a margin (the paper's Q1S
 
 TEST_CASE("missed-mode check: a containing order with a lower best likelihood is flagged") {
   const auto model = [](int q, int s, double max_log_l) {
-    ModelResult m{Order(q, s), {}, 0, 0.0, {}};
+    ModelResult m{Order(q, s), {}, 0, 0.0, {}, {}};
     m.run.max_log_likelihood = max_log_l;
     return m;
   };

@@ -1,0 +1,143 @@
+#include "emit/emit.hpp"
+
+#include "checks/check_suite.hpp"
+#include "checks/passivity.hpp"
+#include "core/errors.hpp"
+#include "model/multipole.hpp"
+#include "passivity/passive_residues.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace admitgen::emit {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Margins (relative to max|G| over the data) of the discrete constraints, tried in turn when rounding
+/// the coefficients to the format breaks the certificate: f32 rounding moves Re H by ~1e-7 of the
+/// coefficient sum, q15 by ~3e-5; 1e-3 changes the response by far less than the refit error tolerated.
+constexpr double kMargins[] = {1e-9, 1e-6, 1e-5, 1e-4, 1e-3};
+
+std::string hz(double f) { return std::isinf(f) ? "infinity" : fmt::format("{:.4g} Hz", f); }
+
+/// Frequencies (Hz) to add as constraints for each negative band of a discrete filter.
+std::vector<double> violations(const codegen::DiscreteModel& m) {
+  const auto r = checks::discrete_passivity(m);
+  std::vector<double> f;
+  for (const auto& b : r.bands) {
+    f.push_back(std::min(b.at, 0.5 * m.fs_hz));
+    f.push_back(b.lo);
+    const double hi = std::min(b.hi, 0.5 * m.fs_hz);
+    f.push_back(hi);
+    f.push_back(0.5 * (b.lo + hi));
+  }
+  return f;
+}
+
+/// max |ΔG|/|G| over frequencies f (Hz).
+double max_relative_change(const Order& order, const Eigen::VectorXd& before, const Eigen::VectorXd& after,
+                           const Eigen::ArrayXd& f_hz) {
+  const Eigen::ArrayXd w = 2.0 * kPi * f_hz;
+  const Eigen::ArrayXcd g0 = evaluate_multipole(order, before, w), g1 = evaluate_multipole(order, after, w);
+  return ((g1 - g0).abs() / g0.abs().max(1e-300)).maxCoeff();
+}
+
+bool discrete_passivity_failed(const checks::CheckReport& report) {
+  const auto failed = report.failed_checks();
+  return std::find(failed.begin(), failed.end(), "passivity_discrete") != failed.end();
+}
+
+}  // namespace
+
+void enforce_continuous_passivity(codegen::EmissionSource& source) {
+  const Order& order = source.surface.order;
+  for (int q = 0; q < order.q(); ++q)
+    if (!(source.surface.theta[Order::lambda(q)] > 0.0)) return;  // non-causal: causality check refuses it
+  for (int s = 0; s < order.s(); ++s)
+    if (!(source.surface.theta[order.alpha(s)] > 0.0)) return;
+  const checks::PassivityResult before = checks::continuous_passivity(order, source.surface.theta.data());
+  if (before.passive) return;
+  const Eigen::ArrayXd f = Eigen::Map<const Eigen::ArrayXd>(source.data_f_hz.data(), Eigen::Index(source.data_f_hz.size()));
+  const Eigen::ArrayXd omega = 2.0 * kPi * f;
+  // "Data-weighted": the change is measured where the data were, every data frequency counting equally,
+  // relative to |G| there (a relative change is what the refit error and the checks speak in).
+  const Eigen::ArrayXcd g = evaluate_multipole(order, source.surface.theta, omega);
+  const passivity::ResidueTarget target{omega, g, g.abs().max(1e-300).inverse()};
+  const passivity::PassiveResidues p = passivity::passive_residues(order, source.surface.theta, target);
+  const double f_lo = f.minCoeff(), f_hi = f.maxCoeff();
+  Eigen::ArrayXd outside(128);
+  for (Eigen::Index i = 0; i < 64; ++i) {
+    outside[i] = f_lo * std::pow(1e-2, double(i + 1) / 64.0);
+    outside[64 + i] = f_hi * std::pow(1e2, double(i + 1) / 64.0);
+  }
+  const double in_band = max_relative_change(order, source.surface.theta, p.theta, f);
+  const double out_band = max_relative_change(order, source.surface.theta, p.theta, outside);
+  std::string bands;
+  for (const auto& b : before.bands)
+    bands += fmt::format("{}{} to {} (min Re G {:.3g})", bands.empty() ? "" : ", ", hz(b.lo), hz(b.hi), b.min_re);
+  source.notes.push_back(fmt::format(
+      "passivity enforced: the {} estimate has Re G < 0 from {}; residues changed minimally (least squares at the "
+      "data frequencies, Re G >= 0 at every frequency, {}): max |dG|/|G| = {:.3g} in the data band, {:.3g} outside "
+      "it ({:.4g} Hz/100 to {:.4g} Hz x 100)",
+      estimate_name(source.estimate), bands, p.certified ? "certified by the Hamiltonian test" : "NOT certified",
+      in_band, out_band, f_lo, f_hi));
+  source.enforcement = {{"applied_to", estimate_name(source.estimate)},
+                        {"negative_bands_before", bands},
+                        {"certified", p.certified},
+                        {"constraint_rounds", p.rounds},
+                        {"max_rel_change_in_data_band", in_band},
+                        {"max_rel_change_outside_data_band", out_band}};
+  source.surface.theta = p.theta;
+}
+
+EmitResult emit(const nlohmann::json& fit, const std::string& fit_path, codegen::EmitSettings settings,
+                const std::string& template_text, const std::string& header_file_name) {
+  codegen::EmissionSource source;
+  if (settings.estimate == Estimate::passive && !fit_has_passive_estimate(fit, settings.order, fit_path)) {
+    codegen::EmitSettings mean = settings;
+    mean.estimate = Estimate::mean;
+    source = codegen::read_emission_source(fit, fit_path, mean);
+    source.notes.push_back("the fit holds no passive estimate (written by an older admitgen): the posterior mean is "
+                           "emitted, made passive below if it is not");
+  } else {
+    source = codegen::read_emission_source(fit, fit_path, settings);
+  }
+  enforce_continuous_passivity(source);
+  settings.passivity_violations = violations;
+  EmitResult r;
+  for (double margin : kMargins) {
+    settings.passive_margin = margin;
+    r.emission = codegen::prepare_emission(source, settings);
+    r.header = codegen::render_header(r.emission, template_text, header_file_name);
+    r.report = checks::run_checks(checks::subject_from_header(r.header, header_file_name));
+    if (!discrete_passivity_failed(r.report)) break;
+  }
+  return r;
+}
+
+std::string EmitResult::refusal(const std::string& out) const {
+  if (safe()) return {};
+  std::string why;
+  for (const auto& c : report.checks)
+    for (const auto& f : c.failures) why += fmt::format("\n  {}: {}", c.name, f);
+  const auto failed = report.failed_checks();
+  const auto has = [&](const char* name) { return std::find(failed.begin(), failed.end(), name) != failed.end(); };
+  std::string next;
+  if (has("causality"))
+    next = "the model has a pole with lambda or alpha <= 0: re-run admitgen fit (the default estimate is always causal)";
+  else if (has("passivity_discrete") || has("passivity_continuous"))
+    next = "the passive refit could not be certified at this rate and format: try a higher --fs, --format f32, "
+           "or --fir-taps 1..8; `admitgen check` on the written header shows the bands";
+  else if (has("headroom") || has("limit_cycle"))
+    next = "fixed-point range: try --format q31 (or f32) instead of q15";
+  else
+    next = "re-run admitgen emit; if it persists, report it with the fit.json";
+  return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}\n"
+                     "(--allow-unsafe writes it anyway, for experts)",
+                     out, fmt::join(failed, ", "), why, next);
+}
+
+}  // namespace admitgen::emit

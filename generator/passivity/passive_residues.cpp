@@ -1,0 +1,115 @@
+#include "passivity/passive_residues.hpp"
+
+#include "core/errors.hpp"
+#include "model/residue_basis.hpp"
+#include "numerics/least_squares_inequality.hpp"
+
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace admitgen::passivity {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Margin δ of the constraints, relative to the target's largest |t| (far above the ~1e-15 rounding of
+/// Re G, far below any measurable change of the model).
+constexpr double kMarginFraction = 1e-9;
+/// Initial constraint grid: log-spaced points per decade from 1e-3 × the slowest pole to 1e3 × the
+/// fastest (Re G of a pole term varies on the scale of its own rate; 16 per decade resolves it).
+constexpr int kPointsPerDecade = 16;
+constexpr int kMaxRounds = 30;
+
+/// Weighted least-squares system [w Re Φ; w Im Φ] r ≈ [w Re t; w Im t].
+void weighted_system(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t, Eigen::MatrixXd& e,
+                     Eigen::VectorXd& f) {
+  const ResidueBasis b = residue_basis(order, theta, t.omega);
+  const Eigen::Index n = t.omega.size(), p = b.re.cols();
+  e.resize(2 * n, p);
+  f.resize(2 * n);
+  e.topRows(n) = t.weights.matrix().asDiagonal() * b.re;
+  e.bottomRows(n) = t.weights.matrix().asDiagonal() * b.im;
+  f.head(n) = (t.weights * t.values.real()).matrix();
+  f.tail(n) = (t.weights * t.values.imag()).matrix();
+}
+
+/// Initial Ω: ω = 0, ω = ∞, the pole frequencies β_s, the target frequencies and a log grid around the poles.
+std::vector<double> initial_constraints(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  std::vector<double> w{0.0, std::numeric_limits<double>::infinity()};
+  for (int q = 0; q < order.q(); ++q) lo = std::min(lo, theta[Order::lambda(q)]), hi = std::max(hi, theta[Order::lambda(q)]);
+  for (int s = 0; s < order.s(); ++s) {
+    const double m = std::hypot(theta[order.alpha(s)], theta[order.beta(s)]);
+    lo = std::min(lo, std::min(m, theta[order.alpha(s)])), hi = std::max(hi, m);
+    w.push_back(std::abs(theta[order.beta(s)]));
+  }
+  for (Eigen::Index i = 0; i < t.omega.size(); ++i) {
+    w.push_back(t.omega[i]);
+    lo = std::min(lo, t.omega[i]), hi = std::max(hi, t.omega[i]);
+  }
+  if (hi > 0.0) {
+    lo = std::max(lo * 1e-3, 1e-300), hi *= 1e3;
+    const int n = static_cast<int>(std::ceil(kPointsPerDecade * std::log10(hi / lo)));
+    for (int i = 0; i <= n; ++i) w.push_back(lo * std::pow(hi / lo, double(i) / n));
+  }
+  return w;
+}
+
+/// Violations to add: each negative band's minimum, edges and geometric midpoint (rad/s).
+void add_violations(const checks::PassivityResult& r, std::vector<double>& omega) {
+  const auto rad = [](double hz) { return 2.0 * kPi * hz; };
+  for (const auto& b : r.bands) {
+    if (std::isfinite(b.at)) omega.push_back(rad(b.at));
+    omega.push_back(rad(b.lo));
+    if (std::isfinite(b.hi)) {
+      omega.push_back(rad(b.hi));
+      omega.push_back(b.lo > 0.0 ? rad(std::sqrt(b.lo * b.hi)) : rad(0.5 * b.hi));
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::VectorXd least_squares_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
+  Eigen::MatrixXd e;
+  Eigen::VectorXd f;
+  weighted_system(order, theta, target, e, f);
+  const Eigen::VectorXd d = e.colwise().norm().transpose().cwiseMax(1e-300).cwiseInverse();
+  return d.asDiagonal() * (e * d.asDiagonal()).colPivHouseholderQr().solve(f);
+}
+
+PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
+  ADMITGEN_ENSURE(target.omega.size() == target.values.size() && target.omega.size() == target.weights.size(),
+                  "passive residues: target sizes differ");
+  Eigen::MatrixXd e;
+  Eigen::VectorXd f;
+  weighted_system(order, theta, target, e, f);
+  const double margin = kMarginFraction * std::max(target.values.abs().maxCoeff(), 1e-300);
+  std::vector<double> omega = initial_constraints(order, theta, target);
+  PassiveResidues out;
+  out.theta = theta;
+  for (out.rounds = 1; out.rounds <= kMaxRounds; ++out.rounds) {
+    std::sort(omega.begin(), omega.end());
+    omega.erase(std::unique(omega.begin(), omega.end()), omega.end());
+    const Eigen::ArrayXd w = Eigen::Map<const Eigen::ArrayXd>(omega.data(), Eigen::Index(omega.size()));
+    const Eigen::MatrixXd g = residue_basis(order, theta, w).re;  // Re G(jω_j) = g_j · r
+    const auto sol = numerics::least_squares_inequality(e, f, g, Eigen::VectorXd::Constant(g.rows(), margin));
+    ADMITGEN_ENSURE(sol.feasible, "passive residues: constraints Re G >= margin are infeasible (cannot happen: "
+                                  "r = (margin, 0, ...) satisfies them)");
+    set_residues(order, sol.x, out.theta);
+    out.constraints = static_cast<int>(omega.size());
+    out.certificate = checks::continuous_passivity(order, out.theta.data());
+    if (out.certificate.passive) {
+      out.certified = true;
+      return out;
+    }
+    add_violations(out.certificate, omega);
+  }
+  out.rounds = kMaxRounds;
+  return out;
+}
+
+}  // namespace admitgen::passivity

@@ -1,0 +1,47 @@
+/// @file
+/// The passive multipole closest to a target, for fixed poles (docs/passivity.md).
+///
+/// With the poles fixed, G(jω) = Σ_k r_k φ_k(ω) is linear in the residues r (model/residue_basis.hpp),
+/// and so is Re G(jω) ≥ 0 at every ω. "The passive model with these poles closest to the target" is then
+/// the convex problem
+///
+///   min_r Σ_i w_i² |t_i − Σ_k r_k φ_k(ω_i)|²   s.t.   Re Σ_k r_k φ_k(ω_j) ≥ δ   for ω_j ∈ Ω,
+///
+/// solved exactly (numerics/least_squares_inequality.hpp) on a finite constraint set Ω, then certified for
+/// every ω ≥ 0 by the Hamiltonian test (checks/passivity.hpp). Frequencies where the test still finds
+/// Re G < 0 are added to Ω and the problem is solved again (constraint generation, Kelley's cutting
+/// planes); since the certified set only grows, this ends in a few rounds. δ > 0 is a margin of 1e-9 of
+/// the target's scale that keeps the certificate robust against rounding.
+#pragma once
+
+#include "checks/passivity.hpp"
+#include "model/order.hpp"
+
+#include <Eigen/Core>
+
+namespace admitgen::passivity {
+
+/// What the residues are fitted to: complex values t at angular frequencies ω (rad/s), weights w ≥ 0.
+struct ResidueTarget {
+  Eigen::ArrayXd omega;
+  Eigen::ArrayXcd values;
+  Eigen::ArrayXd weights;
+};
+
+struct PassiveResidues {
+  Eigen::VectorXd theta;               ///< the given poles with the fitted residues
+  checks::PassivityResult certificate; ///< the Hamiltonian test of theta (certificate.passive when certified)
+  bool certified = false;
+  int rounds = 0;                      ///< constraint-generation rounds (1 = the first grid sufficed)
+  int constraints = 0;                 ///< size of the final constraint set Ω
+};
+
+/// Residues of `theta`'s poles (its residues are ignored) closest to `target` subject to passivity.
+/// Requires every λ, α > 0. Not certified only if the rounds are exhausted (reported, never hidden).
+PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
+
+/// The unconstrained weighted least-squares residues for the same poles (the reference the passive
+/// solution is compared with).
+Eigen::VectorXd least_squares_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
+
+}  // namespace admitgen::passivity
