@@ -63,6 +63,9 @@ std::vector<StageGap> attribute_stages(const Eigen::ArrayXd& f_hz, const Eigen::
   settings.fs_hz = {request.fs_hz};
   settings.format = request.format;
   settings.name = "diagnose";
+  // The stages are those of the fit's posterior mean discretised by least squares: what each stage of the
+  // pipeline costs, without the passivity enforcement emit adds (docs/passivity.md) on top.
+  settings.estimate = Estimate::mean;
   const codegen::Emission emission = codegen::prepare_emission(request.fit, request.fit_path, settings);
   const codegen::EmittedRate& rate = emission.rates.front();
 

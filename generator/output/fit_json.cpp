@@ -71,6 +71,7 @@ Json passive_json(const ModelResult& m) {
   Json params = Json::object();
   for (std::size_t i = 0; i < names.size(); ++i) params[names[i]] = e.theta[static_cast<Eigen::Index>(i)];
   return Json{{"poles_from", passivity::PassiveEstimate::kPolesFrom},
+              {"sample_rank", e.candidate_rank},
               {"residues", e.changed ? "refitted: least squares to the data subject to Re G >= 0 at every frequency"
                                      : "those of the sample (already passive)"},
               {"parameters", params},

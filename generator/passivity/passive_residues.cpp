@@ -36,7 +36,8 @@ void weighted_system(const Order& order, const Eigen::VectorXd& theta, const Res
   f.tail(n) = (t.weights * t.values.imag()).matrix();
 }
 
-/// Initial Ω: ω = 0, ω = ∞, the pole frequencies β_s, the target frequencies and a log grid around the poles.
+/// Initial Ω: ω = 0, ω = ∞, the pole frequencies β_s and a log grid spanning poles and target (the
+/// certificate adds whatever this misses).
 std::vector<double> initial_constraints(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   std::vector<double> w{0.0, std::numeric_limits<double>::infinity()};
@@ -46,10 +47,7 @@ std::vector<double> initial_constraints(const Order& order, const Eigen::VectorX
     lo = std::min(lo, std::min(m, theta[order.alpha(s)])), hi = std::max(hi, m);
     w.push_back(std::abs(theta[order.beta(s)]));
   }
-  for (Eigen::Index i = 0; i < t.omega.size(); ++i) {
-    w.push_back(t.omega[i]);
-    lo = std::min(lo, t.omega[i]), hi = std::max(hi, t.omega[i]);
-  }
+  if (t.omega.size() > 0) lo = std::min(lo, t.omega.minCoeff()), hi = std::max(hi, t.omega.maxCoeff());
   if (hi > 0.0) {
     lo = std::max(lo * 1e-3, 1e-300), hi *= 1e3;
     const int n = static_cast<int>(std::ceil(kPointsPerDecade * std::log10(hi / lo)));

@@ -154,10 +154,19 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
   return warnings;
 }
 
-Eigen::VectorXd best_sample(const ModelResult& model) {
-  Eigen::VectorXd theta(model.order.dim());
-  for (Eigen::Index i = 0; i < theta.size(); ++i) theta[i] = model.parameters[static_cast<std::size_t>(i)].max_likelihood;
-  return theta;
+std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
+  const NestedRun& run = model.run;
+  std::vector<std::size_t> idx(run.size());
+  std::iota(idx.begin(), idx.end(), std::size_t{0});
+  const std::size_t k = std::min(idx.size(), static_cast<std::size_t>(std::max(n, 0)));
+  // Ties broken by index, so the choice is deterministic.
+  std::partial_sort(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(k), idx.end(), [&](std::size_t a, std::size_t b) {
+    return run.log_likelihood[a] > run.log_likelihood[b] || (run.log_likelihood[a] == run.log_likelihood[b] && a < b);
+  });
+  std::vector<Eigen::VectorXd> out;
+  for (std::size_t i = 0; i < k; ++i)
+    out.emplace_back(Eigen::Map<const Eigen::VectorXd>(run.point(idx[i]), model.order.dim()));
+  return out;
 }
 
 namespace {
@@ -228,7 +237,9 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
   fit.selected = settings.rule.select(log_z, buffers);
   fit.models = std::move(results);
   fit.warnings = missed_mode_warnings(fit.models);
-  for (auto& m : fit.models) m.passive = passivity::passive_estimate(data, m.order, best_sample(m), settings.data_count);
+  for (auto& m : fit.models)
+    m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
+                                            settings.data_count);
   if (const auto d = passivity::data_passivity(data); d.negative_points > 0)
     fit.warnings.push_back(fmt::format(
         "the data are not passive at {} of {} points (Re y down to {:.3g}; a wall cannot return more energy than it "

@@ -87,8 +87,8 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order);
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
                       const NestedProgressFn& progress = {}, int round = 0);
 
-/// θ of the highest-likelihood sample of a run (folded), from its parameter summaries.
-Eigen::VectorXd best_sample(const ModelResult& model);
+/// The `n` highest-likelihood samples of a run (folded), best first.
+std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n);
 
 /// Runs the whole grid, selects, and adds each order's passive estimate (and a warning when the data
 /// themselves are not passive at some points). Throws InputError if the data cannot constrain the largest order.
