@@ -107,7 +107,14 @@ int run_fit_command(const FitOptions& o) {
   if (!o.quiet) {
     print_summary(fit);
     for (const auto& w : fit.warnings) fmt::print(stderr, "warning: {}\n", w);
-    fmt::print("selected {} ({}); wrote {}\n", fit.models[fit.selected].order.name(), settings.rule.describe(), path);
+    const auto& chosen = fit.models[fit.selected];
+    fmt::print("selected {} ({}); wrote {}\n", chosen.order.name(), settings.rule.describe(), path);
+    fmt::print("passive estimate of {} (what emit uses): relative RMS residual {:.3g} % (best sample {:.3g} %), {}\n",
+               chosen.order.name(), 100.0 * chosen.passive.relative_rms_residual,
+               100.0 * chosen.passive.best_sample_relative_rms_residual,
+               !chosen.passive.certified ? "NOT certified passive"
+               : chosen.passive.changed  ? "residues refitted under Re G >= 0, certified passive"
+                                         : "the best sample itself, certified passive");
   }
   return 0;
 }
