@@ -1,6 +1,6 @@
 # admitgen_add_boundary(<target>
 #     FIT <fit.json> FS <hz> [<hz>...] FORMAT <f32|q31|q15>
-#     [NAME <c-identifier>] [ORDER <QxSy>] [ESTIMATE mean|max_likelihood] [FIR_TAPS <n>]
+#     [NAME <c-identifier>] [ORDER <QxSy>] [ESTIMATE passive|mean|max_likelihood] [FIR_TAPS <n>]
 #     [BANDS_JSON <file>] [ALLOW_UNSAFE])
 #
 # Runs `admitgen emit` at build time and creates an INTERFACE library <target> that provides the

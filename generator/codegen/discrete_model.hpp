@@ -81,7 +81,8 @@ struct DiscretiseOptions {
   double target_rel_error = 1e-5;
   /// Passivity certifier (emit passes the discrete Hamiltonian test, checks/passivity.hpp): the
   /// frequencies (Hz) of a candidate where Re H(e^{j2πf/fs}) < 0, empty when Re H ≥ 0 up to Nyquist.
-  /// When set, every refit whose least-squares solution is not certified is solved again under
+  /// A candidate is certified when Re H ≥ passive_margin · max|G| up to Nyquist (the certifier is given
+  /// H minus that margin). When set, every refit whose least-squares solution is not certified is solved again under
   /// Re H(e^{jθ_j}) ≥ passive_margin · max|G| on a grid of θ_j ∈ [0, π] plus every violation found
   /// (constraint generation, docs/passivity.md), and a certified candidate beats any that is not.
   std::function<std::vector<double>(const DiscreteModel&)> passivity_violations;

@@ -122,8 +122,19 @@ std::string pretty_name(const std::string& name) {
   return escape_xml(stem) + "<sub>" + escape_xml(name.substr(cut + 1)) + "</sub>";
 }
 
+/// The selected order's passive estimate (docs/passivity.md) as name → value (empty for older fits).
+Json selected_passive_parameters(const Json& fit) {
+  const std::string order = fit["selected"].value("order", std::string());
+  for (const auto& m : fit.value("models", Json::array()))
+    if (m.value("order", std::string()) == order && m.contains("passive_estimate"))
+      return m["passive_estimate"].value("parameters", Json::object());
+  return Json::object();
+}
+
 std::string parameter_table(const Json& fit) {
-  Table t{{"parameter", "mean", "std", "95 % interval", "max likelihood", "unit", "note"}, {}, {1, 2, 3, 4}, {}, {}};
+  Table t{{"parameter", "mean", "std", "95 % interval", "max likelihood", "passive (emitted)", "unit", "note"},
+          {}, {1, 2, 3, 4, 5}, {}, {}};
+  const Json passive = selected_passive_parameters(fit);
   for (const auto& p : fit.value("parameters", Json::array())) {
     const std::string name = p.value("name", std::string("?"));
     const double mean = p.value("mean", 0.0);
@@ -131,12 +142,15 @@ std::string parameter_table(const Json& fit) {
     const auto [unit, note] = unit_and_note(name, mean);
     t.rows.push_back({pretty_name(name), number(mean, 5), number(p.value("std", 0.0), 3),
                       fmt::format("[{}, {}]", number(ci.at(0), 5), number(ci.at(1), 5)),
-                      number(p.value("max_likelihood", 0.0), 5), unit, escape_xml(note)});
+                      number(p.value("max_likelihood", 0.0), 5),
+                      passive.contains(name) ? number(passive[name].get<double>(), 5) : std::string("–"), unit,
+                      escape_xml(note)});
   }
   t.caption = fmt::format(
       "Posterior of the selected order {}, G(ω) = G<sub>∞</sub> + Σ A<sub>q</sub>/(λ<sub>q</sub> + jω) + Σ "
       "[Θ<sub>s</sub>/(θ<sub>s</sub> + jω) + c.c.], Θ = B + jC, θ = α + jβ (e<sup>+jωt</sup>); symmetry-reduced "
-      "form (β ≥ 0, λ and β ascending).",
+      "form (β ≥ 0, λ and β ascending). The passive estimate is what admitgen emit uses by default: a best "
+      "sample's poles with residues refitted under Re G ≥ 0 at every frequency.",
       escape_xml(fit["selected"].value("order", std::string("?"))));
   return html(t);
 }
