@@ -5,6 +5,7 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "output/fit_json.hpp"
+#include "output/posterior_export.hpp"
 #include "report/fit_report.hpp"
 #include "selection/fit.hpp"
 
@@ -101,7 +102,8 @@ int run_fit_command(const FitOptions& o) {
                                data.f_hz[data.size() - 1], o.qmax, o.smax));
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
-  const auto json = fit_to_json(data, read, settings, fit);
+  auto json = fit_to_json(data, read, settings, fit);
+  json["posterior"] = write_posterior_export(o.out, data, settings, fit);  // samples, covariance, bands as CSV
   write_file_atomically(path, json.dump(2) + "\n");
   report::write_fit_report(o.out, json, data);
   if (!o.quiet) {
