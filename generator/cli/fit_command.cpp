@@ -58,7 +58,9 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
       "Example:\n  admitgen fit samples/basotect_tuberlin/rect_5cm.csv --columns f,_,_,_,_,re,im,_ "
       "--qmax 2 --smax 2 --out out/rect_5cm\n"
       "Writes OUT/fit.json (schema admitgen.fit/1) and OUT/report.html (self-contained, with figures) and prints\n"
-      "the evidence table.");
+      "the evidence table. Beside fit.json for notebooks: posterior.json (schema admitgen.posterior/1: posterior\n"
+      "mean and covariance per order), posterior_QxSy.csv (equally weighted samples of every order) and\n"
+      "predictive.csv (the data with the posterior median and 95 % band).");
   sub->add_option("data", opt->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
   sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
   add_data_options(*sub, opt->read);
