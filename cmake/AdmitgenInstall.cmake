@@ -37,8 +37,10 @@ endif()
 configure_file(packaging/admitgen_rt.pc.in ${PROJECT_BINARY_DIR}/admitgen_rt.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/admitgen_rt.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT runtime)
 # Documentation in /usr/share/doc/<Debian package name>/ as Debian does it.
+# (the licence also as "copyright", the name Debian looks for).
 install(FILES LICENSE THIRD_PARTY_NOTICES.md CHANGELOG.md docs/versioning.md
         DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/libadmitgen-rt-dev COMPONENT runtime)
+install(FILES LICENSE RENAME copyright DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/libadmitgen-rt-dev COMPONENT runtime)
 
 # --- generator
 if(ADMITGEN_BUILD_GENERATOR)
@@ -49,4 +51,5 @@ if(ADMITGEN_BUILD_GENERATOR)
   install(FILES cmake/AdmitgenBoundary.cmake DESTINATION ${ADMITGEN_INSTALL_CMAKEDIR} COMPONENT generator)
   install(FILES LICENSE THIRD_PARTY_NOTICES.md CHANGELOG.md docs/versioning.md
           DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/admitgen COMPONENT generator)
+  install(FILES LICENSE RENAME copyright DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/admitgen COMPONENT generator)
 endif()
