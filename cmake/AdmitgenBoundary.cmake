@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # admitgen_add_boundary(<target>
 #     FIT <fit.json> FS <hz> [<hz>...] FORMAT <f32|q31|q15>
 #     [NAME <c-identifier>] [ORDER <QxSy>] [ESTIMATE passive|mean|max_likelihood] [FIR_TAPS <n>]

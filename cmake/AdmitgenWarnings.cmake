@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Warning flags shared by every target: -Wall -Wextra -Wpedantic everywhere,
 # -Wconversion in addition for the C99 runtime (see DEVELOPERS guide).
 function(admitgen_warnings target)

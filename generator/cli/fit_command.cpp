@@ -5,6 +5,7 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "output/fit_json.hpp"
+#include "output/posterior_export.hpp"
 #include "report/fit_report.hpp"
 #include "selection/fit.hpp"
 
@@ -57,7 +58,9 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
       "Example:\n  admitgen fit samples/basotect_tuberlin/rect_5cm.csv --columns f,_,_,_,_,re,im,_ "
       "--qmax 2 --smax 2 --out out/rect_5cm\n"
       "Writes OUT/fit.json (schema admitgen.fit/1) and OUT/report.html (self-contained, with figures) and prints\n"
-      "the evidence table.");
+      "the evidence table. Beside fit.json for notebooks: posterior.json (schema admitgen.posterior/1: posterior\n"
+      "mean and covariance per order), posterior_QxSy.csv (equally weighted samples of every order) and\n"
+      "predictive.csv (the data with the posterior median and 95 % band).");
   sub->add_option("data", opt->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
   sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
   add_data_options(*sub, opt->read);
@@ -101,7 +104,8 @@ int run_fit_command(const FitOptions& o) {
                                data.f_hz[data.size() - 1], o.qmax, o.smax));
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
-  const auto json = fit_to_json(data, read, settings, fit);
+  auto json = fit_to_json(data, read, settings, fit);
+  json["posterior"] = write_posterior_export(o.out, data, settings, fit);  // samples, covariance, bands as CSV
   write_file_atomically(path, json.dump(2) + "\n");
   report::write_fit_report(o.out, json, data);
   if (!o.quiet) {
