@@ -137,3 +137,30 @@ TEST_CASE("passive estimate: near-rigid data with Re y < 0 at many points still 
   CHECK(e.certified);
   CHECK(checks::continuous_passivity(order, e.theta.data()).passive);
 }
+
+TEST_CASE("near-rigid data, Re y < 0 at many points: fit warns, emit writes a certified passive filter") {
+  // The same stiff wall as above (α ≈ 0.01, noise std 0.004, seed 5): the main path with defaults.
+  const std::string dir = test::scratch_dir("near_rigid_cli");
+  std::string csv = "f,re,im\n";
+  Rng rng(5);
+  int negative = 0;
+  for (int i = 0; i < 120; ++i) {
+    const double f = 100.0 * std::pow(30.0, i / 119.0), re = 0.0025 + 0.004 * rng.normal();
+    negative += re < 0.0;
+    csv += fmt::format("{},{},{}\n", f, re, 0.002 * f / 1000.0 + 0.004 * rng.normal());
+  }
+  REQUIRE(negative >= 12);
+  test::write_text(dir + "/near_rigid.csv", csv);
+  const auto fit = test::run_admitgen("fit " + dir + "/near_rigid.csv --live 50 --qmax 1 --smax 1 --out " + dir + "/fit");
+  REQUIRE(fit.exit_code == 0);
+  CHECK(fit.output.find(fmt::format("the data are not passive at {} of 120 points", negative)) != std::string::npos);
+  const auto j = read_fit_file(dir + "/fit/fit.json");
+  CHECK(j["warnings"].dump().find("not passive at") != std::string::npos);
+  for (const char* format : {"f32", "q31", "q15"}) {
+    const auto emit = test::run_admitgen(fmt::format("emit {}/fit/fit.json --fs 48000 --format {} --out {}/wall_{}.h",
+                                                     dir, format, dir, format));
+    CAPTURE(emit.output);
+    CHECK(emit.exit_code == 0);
+    CHECK(test::run_admitgen(fmt::format("check {}/wall_{}.h", dir, format)).exit_code == 0);
+  }
+}
