@@ -127,8 +127,6 @@ int run_fit_command(const FitOptions& o) {
   const Measurement data = read_measurement(o.data, read);
   CreatedDirectories created(o.out);
   ensure_writable_directory(o.out);
-  if (!o.quiet)
-    for (const auto& w : data.warnings) fmt::print(stderr, "warning: {}\n", w);
   Progress progress(!o.quiet);
   progress.message(fmt::format("fitting {} points {:.6g}-{:.6g} Hz over Q0-{} x S0-{}", data.size(), data.f_hz[0],
                                data.f_hz[data.size() - 1], o.qmax, o.smax));

@@ -142,6 +142,11 @@ std::pair<std::string, std::string> split_name_unit(const std::string& field) {
     if (!normalise_unit(inside, false).empty() && is_known_unit(normalise_unit(inside, false)))
       return {trim(f.substr(0, paren)), inside};
   }
+  const auto underscore = f.rfind('_');  // "f_Hz", "f_kHz"
+  if (underscore != std::string::npos && underscore + 1 < f.size()) {
+    const std::string tail = normalise_unit(f.substr(underscore + 1), false);
+    if (tail != "1" && !tail.empty() && is_known_unit(tail)) return {f.substr(0, underscore), f.substr(underscore + 1)};
+  }
   const auto slash = f.rfind(" / ");
   if (slash != std::string::npos && is_known_unit(normalise_unit(f.substr(slash + 3), false)))
     return {trim(f.substr(0, slash)), f.substr(slash + 3)};

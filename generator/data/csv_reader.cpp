@@ -182,7 +182,7 @@ Measurement read_measurement(const std::string& path, const ReadOptions& options
                     fmt::format("{}", rows.back().f));
   check_plausibility({path, m.f_hz, values, m.y, cols.quantity, options}, m.warnings);
   m.quantity = quantity_name(cols.quantity);
-  m.read_as = fmt::format("{}; {}; {}, e^{}jwt", table.describe(), cols.describe,
+  m.read_as = fmt::format("{}; {}; {}, e^{{{}jwt}}", table.describe(), cols.describe,
                           options.rho_c ? fmt::format("SI, rho0*c0 = {:g} Pa s/m", *options.rho_c) : "normalised",
                           conjugate ? "-" : "+");
   return m;

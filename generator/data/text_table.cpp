@@ -73,10 +73,11 @@ std::vector<std::string> tokenize(const std::string& line, char delimiter) {
   return fields;
 }
 
+/// At least two fields, all numbers (an empty last field, left by a delimiter ending the line, aside).
 bool all_numeric(const std::vector<std::string>& fields, char decimal) {
-  return fields.size() >= 2 && std::all_of(fields.begin(), fields.end(), [&](const std::string& f) {
-           return parse_double(f, decimal).has_value();
-         });
+  const auto end = !fields.empty() && fields.back().empty() ? fields.end() - 1 : fields.end();
+  return end - fields.begin() >= 2 &&
+         std::all_of(fields.begin(), end, [&](const std::string& f) { return parse_double(f, decimal).has_value(); });
 }
 
 bool any_numeric(const std::vector<std::string>& fields, char decimal) {

@@ -99,7 +99,8 @@ Json fit_to_json(const Measurement& data, const ReadOptions& read, const FitSett
     errors[m.order.name()] =
         &m == &chosen ? 0.0 : 10.0 / std::log(10.0) * std::hypot(m.run.log_z_error, chosen.run.log_z_error);
   }
-  std::vector<std::string> warnings = fit.warnings;
+  std::vector<std::string> warnings = data.warnings;  // the reader's (e.g. plausibility demoted to warnings)
+  warnings.insert(warnings.end(), fit.warnings.begin(), fit.warnings.end());
   if (const auto poor = poor_fit_warning(chosen.order.name(), goodness_of_fit(data, chosen))) warnings.push_back(*poor);
   return Json{{"schema", "admitgen.fit/1"},
               {"version", kVersion},
