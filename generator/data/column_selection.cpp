@@ -153,7 +153,7 @@ std::string describe(const TextTable& t, const ColumnSelection& s) {
 std::string absorption_only_message() {
   return "the file holds frequency and absorption coefficient only: alpha = 1 - |R|^2 fixes the magnitude of the "
          "reflection factor R at each frequency but not its phase, and a complex admittance needs both (two numbers "
-         "per frequency; e.g. y = 0.5 and y = 0.2 + 0.4j give the same alpha within 0.01 but different filters). "
+         "per frequency; e.g. y = 0.5 and y = 0.8 + 0.6j both give alpha = 8/9 but are different surfaces). "
          "Export the complex reflection factor, impedance or admittance (re/im or magnitude/phase, which the "
          "two-microphone method of ISO 10534-2 measures) and read it with --quantity; alpha alone cannot be fitted";
 }
