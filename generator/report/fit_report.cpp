@@ -181,6 +181,7 @@ std::string provenance(const Json& fit) {
                               text(in.value("quantity", Json("?"))),
                               in.value("rho_c", Json()).is_null() ? ", normalised" : ", ρc = " + text(in["rho_c"]),
                               in.value("band", Json()).is_null() ? "" : ", band " + text(in["band"]))},
+      {"layout", text(in.value("read_as", Json("—")))},
       {"orders", fmt::format("Q0–{} × S0–{}", s.value("qmax", 0), s.value("smax", 0))},
       {"sampler", fmt::format("{}; {} live points, seed {}, Δln Z {} , slices {}", text(sampler.value("method", Json("?"))),
                               s.value("live", 0), text(s.value("seed", Json(0))), text(sampler.value("dlogz", Json("?"))),
