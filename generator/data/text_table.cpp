@@ -102,7 +102,8 @@ struct Layout {
 /// Sniffing: every (delimiter, decimal) pair allowed by `format` is tried on the first lines; the one
 /// under which most lines are all numbers wins; ties go to the earlier pair in the order
 /// ';' '\t' ',' ' ' and '.' before ',' (so "1;2;3" reads with '.', and a tab-separated file is not
-/// taken for blank-separated).
+/// taken for blank-separated). The pair ',' ',' only wins with quoted fields ("0,5"): unquoted, every
+/// line it reads as numbers reads so under ',' '.' too (integers), and the tie goes to '.'.
 Layout sniff(const std::vector<RawLine>& lines, const TextFormat& format) {
   constexpr std::size_t kSniffLines = 200;
   Layout best{format.delimiter.value_or(','), format.decimal.value_or('.')};
@@ -110,7 +111,7 @@ Layout sniff(const std::vector<RawLine>& lines, const TextFormat& format) {
   for (char d : {';', '\t', ',', ' '}) {
     if (format.delimiter && *format.delimiter != d) continue;
     for (char p : {'.', ','}) {
-      if ((format.decimal && *format.decimal != p) || (d == ',' && p == ',')) continue;
+      if (format.decimal && *format.decimal != p) continue;
       std::size_t score = 0;
       for (std::size_t i = 0; i < std::min(lines.size(), kSniffLines); ++i)
         score += all_numeric(tokenize(lines[i].text, d), p) ? 1 : 0;
@@ -136,8 +137,6 @@ std::optional<double> parse_field(const TextTable& table, const std::string& fie
 }
 
 TextTable split_table(const std::string& path, const std::string& text, const TextFormat& format) {
-  if (format.delimiter && format.decimal && *format.delimiter == ',' && *format.decimal == ',')
-    throw InputError("--delimiter ',' and --decimal ',' cannot both hold: one comma cannot separate fields and decimals");
   const auto raw = content_lines(text, format.skip_rows);
   const Layout layout = sniff(raw, format);
   TextTable table;

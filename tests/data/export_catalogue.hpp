@@ -93,6 +93,15 @@ inline std::vector<Export> export_catalogue(const Reference& r) {
                "\xEF\xBB\xBF" "Frequenz [Hz];Re(y);Im(y);\r\n" +
                    table(r, ";", [&](auto i) { auto p = parts(r.y[i]); p.push_back(""); return p; }, "\r\n", true),
                {}, "", ""});
+  c.push_back({"',' delimiter with quoted decimal-comma numbers (LibreOffice)", "quoted_comma.csv",
+               "Frequency,Re(y),Im(y)\n" + [&] {
+                 const auto q = [](double v) { return '"' + comma(g17(v)) + '"'; };
+                 std::string out;
+                 for (Eigen::Index i = 0; i < r.f.size(); ++i)
+                   out += q(r.f[i]) + "," + q(r.y[i].real()) + "," + q(r.y[i].imag()) + "\n";
+                 return out;
+               }(),
+               {}, "", ""});
   c.push_back({"US CSV, quoted header and units row", "us_units.csv",
                "\"Frequency\",\"Re(Z)\",\"Im(Z)\"\n\"Hz\",\"-\",\"-\"\n" + table(r, ",", [&](auto i) { return parts(z(i)); }),
                {}, "", ""});
