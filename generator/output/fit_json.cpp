@@ -31,7 +31,7 @@ Json input_json(const Measurement& data, const ReadOptions& read) {
           {"points", data.size()},
           {"f_min_hz", data.f_hz[0]},
           {"f_max_hz", data.f_hz[data.size() - 1]},
-          {"columns", read.columns ? read.columns->spec : "from the header"},
+          {"columns", read.columns ? read.columns->spec : "auto"},  // auto: see read_as
           {"quantity", data.quantity},
           {"read_as", data.read_as}};
   in["rho_c"] = read.rho_c ? Json(*read.rho_c) : Json(nullptr);
