@@ -8,11 +8,13 @@
 #include "output/posterior_export.hpp"
 #include "report/fit_report.hpp"
 #include "selection/fit.hpp"
+#include "selection/goodness_of_fit.hpp"
 
 #include <fmt/core.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <vector>
 
 namespace admitgen::cli {
 namespace {
@@ -39,15 +41,45 @@ FitSettings to_settings(const FitOptions& o) {
   return s;
 }
 
-void print_summary(const FitResult& fit) {
+/// The evidence table plus each order's goodness of fit (selection/goodness_of_fit.hpp: relative RMS
+/// residual and max |delta alpha| at the max-likelihood parameters).
+void print_summary(const FitResult& fit, const Measurement& data) {
   const auto& best = fit.models[fit.selected];
-  fmt::print("{:<6} {:>12} {:>7} {:>10} {:>11} {:>9} {:>8}\n", "order", "ln Z", "± err", "BF [dB]", "calls", "seconds",
-             "buffers");
-  for (const auto& m : fit.models)
-    fmt::print("{:<6} {:>12.2f} {:>7.2f} {:>10.1f} {:>11} {:>9.2f} {:>8}{}\n", m.order.name(), m.run.log_z,
-               m.run.log_z_error, deciban(m.run.log_z, best.run.log_z), m.run.calls, m.seconds, m.order.buffers(),
-               &m == &best ? "  <- selected" : "");
+  fmt::print("{:<6} {:>12} {:>7} {:>10} {:>11} {:>9} {:>8} {:>8} {:>8}\n", "order", "ln Z", "± err", "BF [dB]", "calls",
+             "seconds", "buffers", "rel.rms", "max|Δα|");
+  for (const auto& m : fit.models) {
+    const GoodnessOfFit g = goodness_of_fit(data, m);
+    fmt::print("{:<6} {:>12.2f} {:>7.2f} {:>10.1f} {:>11} {:>9.2f} {:>8} {:>8.4f} {:>8.4f}{}\n", m.order.name(),
+               m.run.log_z, m.run.log_z_error, deciban(m.run.log_z, best.run.log_z), m.run.calls, m.seconds,
+               m.order.buffers(), g.relative_rms, g.max_abs_delta_alpha, &m == &best ? "  <- selected" : "");
+  }
 }
+
+/// Removes the output directories this run created (deepest first, only while empty) unless kept:
+/// an input error found after the directory was made leaves nothing behind.
+class CreatedDirectories {
+ public:
+  explicit CreatedDirectories(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    for (fs::path p = fs::absolute(dir, ec); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+      created_.push_back(p);
+      if (p == p.parent_path()) break;
+    }
+  }
+  CreatedDirectories(const CreatedDirectories&) = delete;
+  CreatedDirectories& operator=(const CreatedDirectories&) = delete;
+  ~CreatedDirectories() {
+    std::error_code ec;
+    if (!keep_)
+      for (const auto& p : created_) std::filesystem::remove(p, ec);  // fails (harmlessly) if not empty
+  }
+  void keep() { keep_ = true; }
+
+ private:
+  std::vector<std::filesystem::path> created_;  ///< deepest first
+  bool keep_ = false;
+};
 
 }  // namespace
 
@@ -95,10 +127,9 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
 int run_fit_command(const FitOptions& o) {
   const ReadOptions read = o.read.to_read_options();
   const FitSettings settings = to_settings(o);
-  ensure_writable_directory(o.out);
   const Measurement data = read_measurement(o.data, read);
-  if (!o.quiet)
-    for (const auto& w : data.warnings) fmt::print(stderr, "warning: {}\n", w);
+  CreatedDirectories created(o.out);
+  ensure_writable_directory(o.out);
   Progress progress(!o.quiet);
   progress.message(fmt::format("fitting {} points {:.6g}-{:.6g} Hz over Q0-{} x S0-{}", data.size(), data.f_hz[0],
                                data.f_hz[data.size() - 1], o.qmax, o.smax));
@@ -107,10 +138,11 @@ int run_fit_command(const FitOptions& o) {
   auto json = fit_to_json(data, read, settings, fit);
   json["posterior"] = write_posterior_export(o.out, data, settings, fit);  // samples, covariance, bands as CSV
   write_file_atomically(path, json.dump(2) + "\n");
+  created.keep();
   report::write_fit_report(o.out, json, data);
   if (!o.quiet) {
-    print_summary(fit);
-    for (const auto& w : fit.warnings) fmt::print(stderr, "warning: {}\n", w);
+    print_summary(fit, data);
+    for (const auto& w : json["warnings"]) fmt::print(stderr, "warning: {}\n", w.get<std::string>());
     const auto& chosen = fit.models[fit.selected];
     fmt::print("selected {} ({}); wrote {}\n", chosen.order.name(), settings.rule.describe(), path);
     fmt::print("passive estimate of {} (what emit uses): relative RMS residual {:.3g} % (best sample {:.3g} %), {}\n",

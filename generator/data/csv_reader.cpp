@@ -2,93 +2,101 @@
 
 #include "core/errors.hpp"
 #include "core/sha256.hpp"
-#include "data/number_parsing.hpp"
+#include "data/column_selection.hpp"
+#include "data/plausibility.hpp"
+#include "data/text_table.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
-#include <numeric>
-#include <sstream>
 
 namespace admitgen {
 namespace {
 
+constexpr double kPi = 3.141592653589793;
+
 struct Row {
   long line;
-  double f, re, im;
+  double f;
+  std::complex<double> value;  ///< as in the file, after magnitude/phase conversion
 };
-
-/// Fields are separated by ',' (surrounding blanks trimmed, so an empty field is kept and reported)
-/// or, on lines without a comma, by runs of blanks.
-std::vector<std::string> tokenize(const std::string& line) {
-  std::vector<std::string> fields;
-  const bool commas = line.find(',') != std::string::npos;
-  std::string current;
-  const auto flush = [&] {
-    const auto b = current.find_first_not_of(" \t");
-    const auto e = current.find_last_not_of(" \t");
-    fields.push_back(b == std::string::npos ? std::string() : current.substr(b, e - b + 1));
-    current.clear();
-  };
-  for (char c : line) {
-    if (commas ? c == ',' : (c == ' ' || c == '\t')) {
-      if (commas || !current.empty()) flush();
-    } else {
-      current += c;
-    }
-  }
-  if (commas || !current.empty()) flush();
-  return fields;
-}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, 0, "cannot open data file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);  // UTF-8 BOM
-  return text;
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-bool all_non_numeric(const std::vector<std::string>& fields) {
-  return std::none_of(fields.begin(), fields.end(),
-                      [](const std::string& s) { return parse_double(s).has_value(); });
+/// How the two value columns turn into a complex number: scale of the magnitude, unit of the phase.
+struct ValueUnits {
+  MagnitudeScale magnitude = MagnitudeScale::linear;
+  PhaseUnit phase = PhaseUnit::radians;
+};
+
+/// An option given on the command line wins; a unit in the file that contradicts it is an error.
+ValueUnits value_units(const std::string& path, const ColumnSelection& s, const ReadOptions& o) {
+  ValueUnits u;
+  if (!s.polar) return u;
+  const bool file_db = s.first_unit == UnitKind::decibel;
+  if (o.magnitude && file_db && *o.magnitude != MagnitudeScale::decibel)
+    throw FileError(path, 0, "--magnitude linear, but the file gives the magnitude in dB");
+  u.magnitude = o.magnitude.value_or(file_db ? MagnitudeScale::decibel : MagnitudeScale::linear);
+  const bool file_deg = s.second_unit == UnitKind::degrees, file_rad = s.second_unit == UnitKind::radians;
+  if (o.phase && ((file_deg && *o.phase != PhaseUnit::degrees) || (file_rad && *o.phase != PhaseUnit::radians)))
+    throw FileError(path, 0, fmt::format("--phase-unit {}, but the file gives the phase in {}",
+                                         *o.phase == PhaseUnit::degrees ? "deg" : "rad", file_deg ? "degrees" : "radians"));
+  if (!o.phase && !file_deg && !file_rad)
+    throw FileError(path, 0, "the unit of the phase column is not stated in the file: give --phase-unit deg or --phase-unit rad");
+  u.phase = o.phase.value_or(file_deg ? PhaseUnit::degrees : PhaseUnit::radians);
+  return u;
 }
 
-std::vector<Row> parse_rows(const std::string& path, const std::string& text, const ColumnMap& cols) {
+/// The file's units against --rho-c: SI units in the header need it, a name that says normalised
+/// (Z/Z0, "ratio") refuses it.
+void check_scale_units(const std::string& path, const ColumnSelection& s, const ReadOptions& o) {
+  const bool si = s.first_unit == UnitKind::si_impedance || s.first_unit == UnitKind::si_admittance ||
+                  s.second_unit == UnitKind::si_impedance || s.second_unit == UnitKind::si_admittance;
+  if (si && !o.rho_c)
+    throw FileError(path, 0, fmt::format("the file gives the {} in SI units (Pa s/m or m/(Pa s)): give --rho-c RHO_C "
+                                         "(rho0*c0 of the air in the tube in Pa s/m, {} at 20 C)",
+                                         quantity_name(s.quantity), kTypicalRhoC));
+  if (o.rho_c && s.named_normalised && !si)
+    throw FileError(path, 0, "--rho-c given, but the column names say the values are normalised (Z/Z0, ratio): drop --rho-c");
+}
+
+std::vector<Row> parse_rows(const std::string& path, const TextTable& t, const ColumnSelection& s, const ValueUnits& u) {
   std::vector<Row> rows;
-  std::istringstream in(text);
-  std::string line;
-  long number = 0;
-  bool header_allowed = true;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos || line[first] == '#') continue;
-    const auto fields = tokenize(line);
-    if (header_allowed && all_non_numeric(fields)) {
-      header_allowed = false;
-      continue;
-    }
-    header_allowed = false;
-    if (static_cast<int>(fields.size()) != cols.count)
-      throw FileError(path, number,
-                      fmt::format("expected {} columns, found {} (set --columns to describe the file)",
-                                  cols.count, fields.size()),
-                      line);
-    const auto number_at = [&](int index, const char* role) {
-      const auto& field = fields[static_cast<std::size_t>(index)];
-      const auto value = parse_double(field);
-      if (!value) throw FileError(path, number, fmt::format("column {} ({}) is not a number", index + 1, role), field);
+  const double f_scale = s.f_unit == UnitKind::kilohertz ? 1000.0 : 1.0;
+  for (const TextLine& line : t.rows) {
+    if (line.fields.size() != s.width)
+      throw FileError(path, line.number,
+                      fmt::format("expected {} columns, found {} ({}; set --columns to describe the file{})", s.width,
+                                  line.fields.size(), t.describe(),
+                                  t.header ? ", the header names " + fmt::format("{} columns", t.header->fields.size()) : ""),
+                      fmt::format("{}", fmt::join(line.fields, std::string(1, t.delimiter == '\t' ? ' ' : t.delimiter))));
+    const auto number_at = [&](std::size_t index, const char* role) {
+      const auto& field = line.fields[index];
+      const auto value = parse_field(t, field);
+      if (!value) throw FileError(path, line.number, fmt::format("column {} ({}) is not a number", index + 1, role), field);
       if (!std::isfinite(*value))
-        throw FileError(path, number, fmt::format("column {} ({}) is not finite", index + 1, role), field);
+        throw FileError(path, line.number, fmt::format("column {} ({}) is not finite", index + 1, role), field);
       return *value;
     };
-    Row row{number, number_at(cols.f, "f"), number_at(cols.re, "re"), number_at(cols.im, "im")};
-    if (!(row.f > 0.0))
-      throw FileError(path, number, "frequency must be positive (Hz)", fields[static_cast<std::size_t>(cols.f)]);
-    rows.push_back(row);
+    const double f = number_at(s.f, "f") * f_scale;
+    if (!(f > 0.0)) throw FileError(path, line.number, "frequency must be positive (Hz)", line.fields[s.f]);
+    const double a = number_at(s.first, s.polar ? "mag" : "re"), b = number_at(s.second, s.polar ? "phase" : "im");
+    if (!s.polar) {
+      rows.push_back({line.number, f, {a, b}});
+      continue;
+    }
+    if (u.magnitude == MagnitudeScale::linear && a < 0.0)
+      throw FileError(path, line.number, "negative magnitude: if the column is in dB, give --magnitude db", line.fields[s.first]);
+    if (u.phase == PhaseUnit::radians && std::abs(b) > 2.0 * kPi * (1.0 + 1e-9))
+      throw FileError(path, line.number, "phase beyond 2 pi read in radians: if the column is in degrees, give --phase-unit deg",
+                      line.fields[s.second]);
+    const double mag = u.magnitude == MagnitudeScale::decibel ? std::pow(10.0, a / 20.0) : a;  // 20 log10 |x|
+    rows.push_back({line.number, f, std::polar(mag, u.phase == PhaseUnit::degrees ? b * kPi / 180.0 : b)});
   }
   return rows;
 }
@@ -107,10 +115,11 @@ void sort_and_check(const std::string& path, std::vector<Row>& rows, std::vector
                       fmt::format("{}", rows[i].f));
 }
 
-std::complex<double> to_admittance(const std::string& path, const Row& row, const ReadOptions& opt) {
-  const std::complex<double> v(row.re, row.im);
+/// Normalised admittance in e^{+jωt} from a file value already in e^{+jωt}.
+std::complex<double> to_admittance(const std::string& path, const Row& row, Quantity q, const ReadOptions& opt) {
+  const std::complex<double> v = row.value;
   const double rc = opt.rho_c.value_or(1.0);
-  switch (opt.quantity) {
+  switch (q) {
     case Quantity::admittance:
       return v * rc;  // SI admittance [m/(Pa s)] times ρ0c0 gives the normalised one
     case Quantity::impedance:
@@ -123,60 +132,59 @@ std::complex<double> to_admittance(const std::string& path, const Row& row, cons
   throw InternalError("unhandled Quantity");
 }
 
-/// Normalised admittance of real surfaces lies well below 50 in magnitude (a rigid wall is 0, air
-/// itself 1); values far above mean SI units were read as normalised. Frequencies below 20 Hz
-/// everywhere mean kHz (or rad/s confusion the other way is caught by the caller's band checks).
-void check_units(const std::string& path, const std::vector<Row>& rows, const Eigen::ArrayXcd& y,
-                 const ReadOptions& opt) {
-  Eigen::ArrayXd mag = y.abs();
-  std::vector<double> sorted(mag.data(), mag.data() + mag.size());
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  if (median > 50.0)
-    throw FileError(path, 0,
-                    fmt::format("median |normalised admittance| is {:.4g}: the values look like SI units or the "
-                                "wrong quantity; use --rho-c VALUE for SI data or check --quantity",
-                                median));
-  if (opt.rho_c && median < 1e-6)
-    throw FileError(path, 0, fmt::format("median |normalised admittance| is {:.4g} after dividing by --rho-c: "
-                                         "the data look already normalised (drop --rho-c)", median));
-  if (rows.back().f < 20.0)
-    throw FileError(path, rows.back().line, "all frequencies are below 20 Hz: expected Hz (not kHz)",
-                    fmt::format("{}", rows.back().f));
+void keep_band(const std::string& path, std::vector<Row>& rows, const std::optional<Band>& band) {
+  if (!band) return;
+  rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const Row& r) { return r.f < band->lo_hz || r.f > band->hi_hz; }),
+             rows.end());
+  if (rows.empty()) throw FileError(path, 0, fmt::format("no data inside --band {}:{} Hz", band->lo_hz, band->hi_hz));
+}
+
+void check_options(const ReadOptions& options) {
+  if (options.quantity == Quantity::reflection && options.rho_c)
+    throw InputError("--rho-c does not apply to a reflection factor (it is dimensionless)");
+  if (options.rho_c && !(*options.rho_c > 0.0 && std::isfinite(*options.rho_c)))
+    throw InputError(fmt::format("--rho-c must be a positive number, got {}", *options.rho_c));
+  if (options.format.skip_rows < 0) throw InputError("--skip-rows must not be negative");
 }
 
 }  // namespace
 
 Measurement read_measurement(const std::string& path, const ReadOptions& options) {
-  if (options.quantity == Quantity::reflection && options.rho_c)
-    throw InputError("--rho-c does not apply to a reflection factor (it is dimensionless)");
-  if (options.rho_c && !(*options.rho_c > 0.0 && std::isfinite(*options.rho_c)))
-    throw InputError(fmt::format("--rho-c must be a positive number, got {}", *options.rho_c));
+  check_options(options);
   const std::string text = read_text(path);
   Measurement m;
   m.path = path;
   m.sha256 = sha256_hex(text);
-  auto rows = parse_rows(path, text, options.columns);
-  if (rows.empty()) throw FileError(path, 0, "no data rows");
+  const TextTable table = split_table(path, text, options.format);
+  const ColumnSelection cols = select_columns(path, table, options);
+  if (cols.quantity == Quantity::reflection && options.rho_c)
+    throw InputError("--rho-c does not apply to a reflection factor (it is dimensionless)");
+  check_scale_units(path, cols, options);
+  auto rows = parse_rows(path, table, cols, value_units(path, cols, options));
   sort_and_check(path, rows, m.warnings);
-  if (options.band) {
-    const Band b = *options.band;
-    rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const Row& r) { return r.f < b.lo_hz || r.f > b.hi_hz; }),
-               rows.end());
-    if (rows.empty())
-      throw FileError(path, 0, fmt::format("no data inside --band {}:{} Hz", b.lo_hz, b.hi_hz));
-  }
+  keep_band(path, rows, options.band);
   if (static_cast<int>(rows.size()) < kMinimumPoints)
     throw FileError(path, 0, fmt::format("only {} data point(s); at least {} are needed", rows.size(), kMinimumPoints));
+  const bool conjugate = options.time_convention == TimeConvention::minus_jwt;  // e^{−jωt} → e^{+jωt}
   const auto n = static_cast<Eigen::Index>(rows.size());
   m.f_hz.resize(n);
   m.y.resize(n);
+  Eigen::ArrayXcd values(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const auto& r = rows[static_cast<std::size_t>(i)];
+    auto& r = rows[static_cast<std::size_t>(i)];
+    if (conjugate) r.value = std::conj(r.value);
     m.f_hz[i] = r.f;
-    m.y[i] = to_admittance(path, r, options);
+    values[i] = r.value;
+    m.y[i] = to_admittance(path, r, cols.quantity, options);
   }
-  check_units(path, rows, m.y, options);
+  if (rows.back().f < 20.0)
+    throw FileError(path, rows.back().line, "all frequencies are below 20 Hz: expected Hz (not kHz)",
+                    fmt::format("{}", rows.back().f));
+  check_plausibility({path, m.f_hz, values, m.y, cols.quantity, options}, m.warnings);
+  m.quantity = quantity_name(cols.quantity);
+  m.read_as = fmt::format("{}; {}; {}, e^{{{}jwt}}", table.describe(), cols.describe,
+                          options.rho_c ? fmt::format("SI, rho0*c0 = {:g} Pa s/m", *options.rho_c) : "normalised",
+                          conjugate ? "-" : "+");
   return m;
 }
 

@@ -1,7 +1,8 @@
 /// @file
-/// Reads a measured complex quantity from CSV/whitespace text and converts it to normalised
-/// admittance (contract.md, "Input data"). Every malformed input is a FileError naming the file,
-/// the line and the offending value.
+/// Reads a measured complex quantity from an exported table (CSV, ';' or tab separated, blanks; decimal
+/// point or comma; preamble, header and unit rows) and converts it to normalised admittance in
+/// e^{+jωt} (docs/reading-data.md). Every malformed input is a FileError naming the file, the line and
+/// the offending value; implausible readings are refused by data/plausibility.hpp.
 #pragma once
 
 #include "data/measurement.hpp"

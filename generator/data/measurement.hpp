@@ -18,6 +18,8 @@ struct Measurement {
   Eigen::ArrayXd f_hz;             ///< ascending, > 0, no duplicates
   Eigen::ArrayXcd y;               ///< normalised admittance at f_hz
   std::vector<std::string> warnings;  ///< non-fatal remarks (e.g. rows were sorted)
+  std::string quantity = "admittance";  ///< what the file held: admittance, impedance or reflection
+  std::string read_as;  ///< how the file was read: layout, columns, units (docs/reading-data.md)
 
   Eigen::Index size() const { return f_hz.size(); }
   Eigen::ArrayXd omega() const { return 2.0 * EIGEN_PI * f_hz; }

@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "data/number_parsing.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace admitgen {
@@ -12,6 +13,34 @@ Quantity parse_quantity(const std::string& text) {
   if (text == "impedance") return Quantity::impedance;
   if (text == "reflection") return Quantity::reflection;
   throw InputError(fmt::format("--quantity '{}': expected admittance, impedance or reflection", text));
+}
+
+const char* quantity_name(Quantity q) {
+  switch (q) {
+    case Quantity::admittance: return "admittance";
+    case Quantity::impedance: return "impedance";
+    case Quantity::reflection: return "reflection";
+  }
+  throw InternalError("unhandled Quantity");
+}
+
+MagnitudeScale parse_magnitude_scale(const std::string& text) {
+  if (text == "linear") return MagnitudeScale::linear;
+  if (text == "db" || text == "dB") return MagnitudeScale::decibel;
+  throw InputError(fmt::format("--magnitude '{}': expected linear or db", text));
+}
+
+PhaseUnit parse_phase_unit(const std::string& text) {
+  if (text == "deg") return PhaseUnit::degrees;
+  if (text == "rad") return PhaseUnit::radians;
+  throw InputError(fmt::format("--phase-unit '{}': expected deg or rad", text));
+}
+
+TimeConvention parse_time_convention(const std::string& text) {
+  if (text == "+jwt") return TimeConvention::plus_jwt;
+  if (text == "-jwt") return TimeConvention::minus_jwt;
+  throw InputError(fmt::format("--time-convention '{}': expected +jwt (e^{{+jwt}}, engineering) or -jwt "
+                               "(e^{{-iwt}}, physics)", text));
 }
 
 Band Band::parse(const std::string& text) {
@@ -28,26 +57,67 @@ Band Band::parse(const std::string& text) {
   return Band{*lo, *hi};
 }
 
+const char* role_name(Role r) {
+  switch (r) {
+    case Role::f: return "f";
+    case Role::re: return "re";
+    case Role::im: return "im";
+    case Role::mag: return "mag";
+    case Role::phase: return "phase";
+    case Role::skip: return "_";
+  }
+  throw InternalError("unhandled Role");
+}
+
+namespace {
+
+std::optional<Role> role_from(const std::string& name) {
+  for (Role r : {Role::f, Role::re, Role::im, Role::mag, Role::phase, Role::skip})
+    if (name == role_name(r)) return r;
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool ColumnMap::polar() const {
+  const auto has_mag = [](Role r) { return r == Role::mag; };
+  if (by_name()) return std::any_of(names.begin(), names.end(), [&](const auto& n) { return has_mag(n.first); });
+  return std::any_of(positions.begin(), positions.end(), has_mag);
+}
+
 ColumnMap ColumnMap::parse(const std::string& spec) {
-  ColumnMap map{-1, -1, -1, 0, spec};
+  ColumnMap map;
+  map.spec = spec;
+  const auto bad = [&](const std::string& why) {
+    return InputError(fmt::format("--columns '{}': {} (expected f, re, im (or mag, phase) and _ for skipped columns "
+                                  "by position, e.g. f,_,_,_,_,re,im,_, or by header name, e.g. "
+                                  "f=Frequency [Hz],re=Re(Z/Z0),im=Im(Z/Z0))", spec, why));
+  };
+  const bool by_name = spec.find('=') != std::string::npos;
+  std::vector<Role> seen;
   std::stringstream ss(spec);
   std::string item;
-  int index = 0;
-  const auto bad = [&](const std::string& why) {
-    return InputError(fmt::format("--columns '{}': {} (expected names f, re, im and _ for skipped "
-                                  "columns, e.g. f,_,_,_,_,re,im,_)", spec, why));
-  };
   while (std::getline(ss, item, ',')) {
-    int* slot = item == "f" ? &map.f : item == "re" ? &map.re : item == "im" ? &map.im : nullptr;
-    if (slot == nullptr && item != "_") throw bad(fmt::format("unknown column name '{}'", item));
-    if (slot != nullptr) {
-      if (*slot >= 0) throw bad(fmt::format("column '{}' named twice", item));
-      *slot = index;
+    const auto eq = item.find('=');
+    if (by_name != (eq != std::string::npos)) throw bad("mixes positions and names");
+    const auto role = role_from(by_name ? item.substr(0, eq) : item);
+    if (!role) throw bad(fmt::format("unknown column role '{}'", by_name ? item.substr(0, eq) : item));
+    if (*role != Role::skip && std::count(seen.begin(), seen.end(), *role) > 0)
+      throw bad(fmt::format("column '{}' named twice", role_name(*role)));
+    seen.push_back(*role);
+    if (by_name) {
+      if (*role == Role::skip) throw bad("'_' has no meaning by name: list only the columns to read");
+      if (eq + 1 >= item.size()) throw bad(fmt::format("no header name after '{}='", role_name(*role)));
+      map.names.emplace_back(*role, item.substr(eq + 1));
+    } else {
+      map.positions.push_back(*role);
     }
-    ++index;
   }
-  if (map.f < 0 || map.re < 0 || map.im < 0) throw bad("f, re and im must each be named once");
-  map.count = index;
+  const auto has = [&](Role r) { return std::count(seen.begin(), seen.end(), r) == 1; };
+  const bool cartesian = has(Role::re) && has(Role::im), polar = has(Role::mag) && has(Role::phase);
+  if (!has(Role::f) || cartesian == polar ||
+      (cartesian && (has(Role::mag) || has(Role::phase))) || (polar && (has(Role::re) || has(Role::im))))
+    throw bad("f and either re and im or mag and phase must each be named once");
   return map;
 }
 

@@ -1,6 +1,7 @@
 #include "output/fit_json.hpp"
 
 #include "core/version.hpp"
+#include "selection/goodness_of_fit.hpp"
 
 #include <fmt/format.h>
 
@@ -24,23 +25,15 @@ Json to_json(const std::vector<ParameterSummary>& params) {
 
 Json to_json(const Eigen::ArrayXd& a) { return Json(std::vector<double>(a.data(), a.data() + a.size())); }
 
-const char* quantity_name(Quantity q) {
-  switch (q) {
-    case Quantity::admittance: return "admittance";
-    case Quantity::impedance: return "impedance";
-    case Quantity::reflection: return "reflection";
-  }
-  return "?";
-}
-
 Json input_json(const Measurement& data, const ReadOptions& read) {
   Json in{{"path", data.path},
           {"sha256", data.sha256},
           {"points", data.size()},
           {"f_min_hz", data.f_hz[0]},
           {"f_max_hz", data.f_hz[data.size() - 1]},
-          {"columns", read.columns.spec},
-          {"quantity", quantity_name(read.quantity)}};
+          {"columns", read.columns ? read.columns->spec : "auto"},  // auto: see read_as
+          {"quantity", data.quantity},
+          {"read_as", data.read_as}};
   in["rho_c"] = read.rho_c ? Json(*read.rho_c) : Json(nullptr);
   in["band"] = read.band ? Json{read.band->lo_hz, read.band->hi_hz} : Json(nullptr);
   return in;
@@ -84,7 +77,7 @@ Json passive_json(const ModelResult& m) {
               {"constraint_rounds", e.rounds}};
 }
 
-Json model_json(const ModelResult& m) {
+Json model_json(const ModelResult& m, const Measurement& data) {
   Json j{{"order", m.order.name()},
               {"Q", m.order.q()},
               {"S", m.order.s()},
@@ -100,6 +93,10 @@ Json model_json(const ModelResult& m) {
               {"parameters", to_json(m.parameters)},
               {"passive_estimate", passive_json(m)}};
   if (m.run.log_support_fraction != 0.0) j["log_passive_prior_fraction"] = m.run.log_support_fraction;
+  const GoodnessOfFit g = goodness_of_fit(data, m);
+  j["goodness_of_fit"] = {{"estimate", "max_likelihood"},
+                          {"relative_rms_residual", g.relative_rms},
+                          {"max_abs_delta_alpha", g.max_abs_delta_alpha}};
   return j;
 }
 
@@ -118,11 +115,14 @@ Json fit_to_json(const Measurement& data, const ReadOptions& read, const FitSett
   const ModelResult& chosen = fit.models[fit.selected];
   Json models = Json::array(), factors = Json::object(), errors = Json::object();
   for (const auto& m : fit.models) {
-    models.push_back(model_json(m));
+    models.push_back(model_json(m, data));
     factors[m.order.name()] = deciban(m.run.log_z, chosen.run.log_z);
     errors[m.order.name()] =
         &m == &chosen ? 0.0 : 10.0 / std::log(10.0) * std::hypot(m.run.log_z_error, chosen.run.log_z_error);
   }
+  std::vector<std::string> warnings = data.warnings;  // the reader's (e.g. plausibility demoted to warnings)
+  warnings.insert(warnings.end(), fit.warnings.begin(), fit.warnings.end());
+  if (const auto poor = poor_fit_warning(chosen.order.name(), goodness_of_fit(data, chosen))) warnings.push_back(*poor);
   return Json{{"schema", "admitgen.fit/1"},
               {"version", kVersion},
               {"input", input_json(data, read)},
@@ -133,7 +133,7 @@ Json fit_to_json(const Measurement& data, const ReadOptions& read, const FitSett
               {"selected", {{"order", chosen.order.name()}, {"rule", settings.rule.describe()}}},
               {"parameters", to_json(chosen.parameters)},
               {"predictive", predictive_json(fit.predictive)},
-              {"warnings", fit.warnings}};
+              {"warnings", warnings}};
 }
 
 }  // namespace admitgen

@@ -80,8 +80,15 @@ plot::Figure evidence_figure(const Json& fit) {
   return fig;
 }
 
+/// One goodness-of-fit figure of a model entry ("—" in fits written before it was recorded).
+std::string goodness(const Json& model, const char* key) {
+  const Json g = model.value("goodness_of_fit", Json::object());
+  return g.contains(key) ? number(g[key].get<double>(), 3) : "—";
+}
+
 std::string evidence_table(const Json& fit) {
-  Table t{{"order", "buffers", "ln Z", "± σ", "Bayes factor [dB]", "± σ [dB]", "max ln L"}, {}, {1, 2, 3, 4, 5, 6}, {}, {}};
+  Table t{{"order", "buffers", "ln Z", "± σ", "Bayes factor [dB]", "± σ [dB]", "max ln L", "rel. RMS residual", "max |Δα|"},
+          {}, {1, 2, 3, 4, 5, 6, 7, 8}, {}, {}};
   const std::string selected = fit["selected"].value("order", std::string());
   const Json factors = fit.value("bayes_factors_deciban", Json::object());
   const Json errors = fit.value("bayes_factor_errors_deciban", Json::object());
@@ -92,12 +99,15 @@ std::string evidence_table(const Json& fit) {
                       fmt::format("{:.2f}", m.value("log_evidence_error", 0.0)),
                       factors.contains(order) ? fmt::format("{:.1f}", factors[order].get<double>()) : "—",
                       errors.contains(order) ? fmt::format("{:.1f}", errors[order].get<double>()) : "—",
-                      fmt::format("{:.2f}", m.value("max_log_likelihood", 0.0))});
+                      fmt::format("{:.2f}", m.value("max_log_likelihood", 0.0)),
+                      goodness(m, "relative_rms_residual"), goodness(m, "max_abs_delta_alpha")});
     t.row_classes.push_back(order == selected ? "selected" : "");
   }
   t.caption = fmt::format(
       "Bayes factor of each order against the selected one, 10·log₁₀(Z/Z<sub>sel</sub>) in deciban: −10 dB is odds "
-      "10:1 against, −20 dB 100:1 (decisive). Buffers: state variables of the filter (Q + 2S). Selection rule: {}.",
+      "10:1 against, −20 dB 100:1 (decisive). Buffers: state variables of the filter (Q + 2S). Goodness of fit at "
+      "each order's maximum-likelihood parameters: relative RMS residual ‖D − G‖/‖D‖ of the complex admittance and "
+      "the largest absorption error max |Δα| over the data frequencies. Selection rule: {}.",
       escape_xml(fit["selected"].value("rule", std::string("?"))));
   return html(t);
 }
@@ -185,6 +195,7 @@ std::string provenance(const Json& fit) {
                               text(in.value("quantity", Json("?"))),
                               in.value("rho_c", Json()).is_null() ? ", normalised" : ", ρc = " + text(in["rho_c"]),
                               in.value("band", Json()).is_null() ? "" : ", band " + text(in["band"]))},
+      {"layout", text(in.value("read_as", Json("—")))},
       {"orders", fmt::format("Q0–{} × S0–{}", s.value("qmax", 0), s.value("smax", 0))},
       {"sampler", fmt::format("{}; {} live points, seed {}, Δln Z {} , slices {}", text(sampler.value("method", Json("?"))),
                               s.value("live", 0), text(s.value("seed", Json(0))), text(sampler.value("dlogz", Json("?"))),
