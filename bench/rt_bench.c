@@ -182,21 +182,12 @@ static double time_direct(format fmt, int nodes, int taps) {
   return (now_ns() - t0) / (double)(steps * nodes);
 }
 
-static double fastest_runtime(format fmt, int nodes, int isa) {
+/* The fastest of REPEAT timings (time_runtime with arg = isa, time_direct with arg = taps). */
+static double fastest(double (*timing)(format, int, int), format fmt, int nodes, int arg) {
   double best = 1e30;
   int r;
   for (r = 0; r < REPEAT; ++r) {
-    const double t = time_runtime(fmt, nodes, isa);
-    if (t < best) best = t;
-  }
-  return best;
-}
-
-static double fastest_direct(format fmt, int nodes, int taps) {
-  double best = 1e30;
-  int r;
-  for (r = 0; r < REPEAT; ++r) {
-    const double t = time_direct(fmt, nodes, taps);
+    const double t = timing(fmt, nodes, arg);
     if (t < best) best = t;
   }
   return best;
@@ -244,9 +235,9 @@ int main(void) {
   for (fmt = F32; fmt <= Q15; ++fmt)
     for (n = 0; n < 2; ++n) {
       const int nodes = node_counts[n];
-      const double r = fastest_runtime((format)fmt, nodes, ADMITGEN_RT_ISA_BEST);
-      const double s = nodes > ADMITGEN_RT_SMALL_N && simd ? fastest_runtime((format)fmt, nodes, ADMITGEN_RT_ISA_SCALAR) : r;
-      const double d = fmt == Q15 ? 0.0 : fastest_direct((format)fmt, nodes, taps);
+      const double r = fastest(time_runtime, (format)fmt, nodes, ADMITGEN_RT_ISA_BEST);
+      const double s = nodes > ADMITGEN_RT_SMALL_N && simd ? fastest(time_runtime, (format)fmt, nodes, ADMITGEN_RT_ISA_SCALAR) : r;
+      const double d = fmt == Q15 ? 0.0 : fastest(time_direct, (format)fmt, nodes, taps);
       if (fmt == Q15)
         printf("%-5s %6d %14.3f %16.3f %14s %8s %14.3f %12.1f\n", format_name[fmt], nodes, r, r / states, "-", "-", s, s / r);
       else
