@@ -70,12 +70,8 @@ static const char *rt_simd_name(void) {
 #define GOLD_OUT rt_golden_q31_out
 #define ZERO_DECAY WALL_Q31_48000_ZERO_DECAY_SAMPLES
 #include "rt_bitexact_checks.h"
-#undef FMT
-#undef T
 #undef MODEL
 #undef INPUT
-#undef GOLD_OUT
-#undef ZERO_DECAY
 #define FMT q15
 #define T int16_t
 #define MODEL wall_q15_48000
@@ -83,12 +79,8 @@ static const char *rt_simd_name(void) {
 #define GOLD_OUT rt_golden_q15_out
 #define ZERO_DECAY WALL_Q15_48000_ZERO_DECAY_SAMPLES
 #include "rt_bitexact_checks.h"
-#undef FMT
-#undef T
 #undef MODEL
 #undef INPUT
-#undef GOLD_OUT
-#undef ZERO_DECAY
 #undef RT_FIXED
 #endif
 
@@ -169,10 +161,6 @@ static void f32_accuracy(void) {
   printf("f32: golden input, max |y - y_double| = %.3g (bound %.3g, derived in f32_bound)\n", worst, bound);
   RT_CHECK(worst <= bound, "f32 error %.3g above the bound %.3g", worst, bound);
 }
-#undef FMT
-#undef T
-#undef MODEL
-#undef INPUT
 #undef RT_FIXED
 #endif
 

@@ -2,7 +2,8 @@
  * rt_bitexact_checks.h - the checks of rt_bitexact.c, included once per format. The includer defines FMT
  * (f32, q31 or q15), T (the sample type), MODEL (the emitted model), INPUT(k) (golden input sample k as a T),
  * RT_FIXED (1 for q31/q15: golden outputs and limit cycles are checked too) and, for fixed formats, GOLD_OUT
- * and ZERO_DECAY (the header's bound on samples to exactly 0). No include guard on purpose.
+ * and ZERO_DECAY (the header's bound on samples to exactly 0). Its end undefines FMT, T, GOLD_OUT and
+ * ZERO_DECAY (MODEL and INPUT stay for the includer). No include guard on purpose.
  */
 #define RT_CAT2(a, b) a##b
 #define RT_CAT(a, b) RT_CAT2(a, b)
@@ -183,3 +184,7 @@ static void RT_FN(all)(void) {
 #undef GOLD_IN
 #undef GOLD_OUT
 #undef PROCESS_ISA
+#undef FMT
+#undef T
+#undef GOLD_OUT
+#undef ZERO_DECAY
