@@ -42,6 +42,7 @@ static void *rt_slot(int k) {
   return (void *)(p + (uintptr_t)k * SLOT_BYTES);
 }
 
+#if RT_WITH_FIXED
 /* xorshift32 (Marsaglia 2003): full-scale noise for the limit-cycle check. */
 static uint32_t rt_rng_next(uint32_t *s) {
   uint32_t x = *s;
@@ -50,6 +51,7 @@ static uint32_t rt_rng_next(uint32_t *s) {
   x ^= x << 5;
   return *s = x;
 }
+#endif
 
 static const char *rt_simd_name(void) {
 #if ADMITGEN_RT_HAVE_AVX2
@@ -57,7 +59,7 @@ static const char *rt_simd_name(void) {
 #elif ADMITGEN_RT_HAVE_NEON
   return "NEON";
 #else
-  return "none on this target: scalar = scalar";
+  return "none on this target: the comparison is trivial";
 #endif
 }
 
