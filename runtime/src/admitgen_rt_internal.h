@@ -83,7 +83,11 @@ static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) {
  * kernels use one evaluation order on every path (and ISO C forbids contracting it into FMAs unless
  * FP_CONTRACT is on, which C99 mode leaves off in GCC), so they are bit-identical too. */
 #define ADMITGEN_RT_SMALL_N 8
+/* Frames per chunk of the small-n path; its stack arrays hold 64 + CHUNK inputs and CHUNK accumulators
+ * (about 0.9 KiB for the fixed formats at 32 on Cortex-M4): define smaller for a tight MCU stack. */
+#ifndef ADMITGEN_RT_CHUNK
 #define ADMITGEN_RT_CHUNK 32
+#endif
 
 #if !defined(ADMITGEN_RT_NO_SIMD) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define ADMITGEN_RT_HAVE_AVX2 1
