@@ -103,25 +103,6 @@ static inline admitgen_rt__vshift admitgen_rt__vshift_make(int32_t s) {
   return k;
 }
 
-static inline __m256i admitgen_rt__vfloor_shr(__m256i v, const admitgen_rt__vshift *k) {
-  const __m256i sign = _mm256_set1_epi64x((long long)INT64_MIN);
-  return _mm256_sub_epi64(_mm256_srl_epi64(_mm256_xor_si256(v, sign), k->count), k->bias);
-}
-
-static inline __m256i admitgen_rt__vclamp(__m256i v, __m256i lo, __m256i hi) {
-  v = _mm256_blendv_epi8(v, hi, _mm256_cmpgt_epi64(v, hi));
-  return _mm256_blendv_epi8(v, lo, _mm256_cmpgt_epi64(lo, v));
-}
-
-/* admitgen_rt__add_tz on 4 lanes: trunc(old + prod / 2^s) saturated to int32. */
-static inline __m256i admitgen_rt__vadd_tz(__m256i old, __m256i prod, const admitgen_rt__vshift *k) {
-  const __m256i zero = _mm256_setzero_si256();
-  __m256i v = _mm256_add_epi64(old, admitgen_rt__vfloor_shr(prod, k));
-  const __m256i exact = _mm256_cmpeq_epi64(_mm256_and_si256(prod, k->mask), zero);
-  v = _mm256_sub_epi64(v, _mm256_andnot_si256(exact, _mm256_cmpgt_epi64(zero, v))); /* +1 if v < 0 and inexact */
-  return admitgen_rt__vclamp(v, _mm256_set1_epi64x(INT32_MIN), _mm256_set1_epi64x(INT32_MAX));
-}
-
 static inline __m256i admitgen_rt__vload32(const int32_t *p) {
   return _mm256_cvtepi32_epi64(_mm_loadu_si128((const __m128i *)(const void *)p));
 }
@@ -144,71 +125,65 @@ static inline __m256i admitgen_rt__vinput(const admitgen_rt__qio *io, size_t idx
   return _mm256_setzero_si256();
 }
 
-static inline void admitgen_rt__voutput(const admitgen_rt__qio *io, size_t idx, __m256i acc, const admitgen_rt__vshift *k,
-                                        __m256i half) {
-  const __m256i v = admitgen_rt__vfloor_shr(_mm256_add_epi64(acc, half), k);
-  if (io->out32 != NULL)
-    admitgen_rt__vstore32(io->out32 + idx,
-                          admitgen_rt__vclamp(v, _mm256_set1_epi64x(INT32_MIN), _mm256_set1_epi64x(INT32_MAX)));
-  if (io->out16 != NULL) {
-    const __m128i w = admitgen_rt__vnarrow(admitgen_rt__vclamp(v, _mm256_set1_epi64x(INT16_MIN), _mm256_set1_epi64x(INT16_MAX)));
-    _mm_storel_epi64((__m128i *)(void *)(io->out16 + idx), _mm_packs_epi32(w, w));
-  }
+/* AVX2 primitives. */
+static inline __m256i admitgen_rt__vfloor_shr_avx2(__m256i v, const admitgen_rt__vshift *k) {
+  const __m256i sign = _mm256_set1_epi64x((long long)INT64_MIN);
+  return _mm256_sub_epi64(_mm256_srl_epi64(_mm256_xor_si256(v, sign), k->count), k->bias);
 }
 
-/* One block of 8 nodes starting at b: halves h = 0, 1 of 4 nodes each. */
-void admitgen_rt__qblock_avx2(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
-                              size_t base, size_t b, int32_t new_head, int commit) {
-  const size_t n = (size_t)st->n;
-  __m256i u[2], acc[2];
-  int32_t h, k, q;
-  for (h = 0; h < 2; ++h) {
-    u[h] = admitgen_rt__vinput(io, base + b + 4u * (size_t)h);
-    acc[h] = admitgen_rt__vmul(u[h], t->n_fir > 0 ? admitgen_rt__qfir(t, 0) : 0);
-  }
-  for (k = 1; k < t->n_fir; ++k) {
-    const int32_t d = admitgen_rt__qfir(t, k);
-    const int32_t *row = st->hist + (size_t)admitgen_rt__ring_row(st->head, k, st->rows) * n + b;
-    for (h = 0; h < 2; ++h) acc[h] = _mm256_add_epi64(acc[h], admitgen_rt__vmul(admitgen_rt__vload32(row + 4 * h), d));
-  }
-  for (q = 0; q < t->n_real; ++q) {
-    const admitgen_rt__qreal_coef r = admitgen_rt__qreal(t, q);
-    const admitgen_rt__vshift sh = admitgen_rt__vshift_make(r.s);
-    int32_t *x = st->x + (size_t)q * n + b;
-    for (h = 0; h < 2; ++h) {
-      const __m256i x0 = admitgen_rt__vload32(x + 4 * h);
-      const __m256i v = admitgen_rt__vadd_tz(x0, _mm256_sub_epi64(admitgen_rt__vmul(u[h], r.m), admitgen_rt__vmul(x0, r.m)), &sh);
-      if (commit) admitgen_rt__vstore32(x + 4 * h, v);
-      acc[h] = _mm256_add_epi64(acc[h], admitgen_rt__vmul(v, r.c));
-    }
-  }
-  for (q = 0; q < t->n_pair; ++q) {
-    const admitgen_rt__qpair_coef p = admitgen_rt__qpair(t, q);
-    const admitgen_rt__vshift sh = admitgen_rt__vshift_make(p.s);
-    int32_t *xi = st->xi + (size_t)q * n + b, *eta = st->eta + (size_t)q * n + b;
-    for (h = 0; h < 2; ++h) {
-      const __m256i a = admitgen_rt__vload32(xi + 4 * h), e = admitgen_rt__vload32(eta + 4 * h);
-      const __m256i pa = _mm256_add_epi64(_mm256_sub_epi64(admitgen_rt__vmul(a, p.er), admitgen_rt__vmul(e, p.pi)),
-                                          admitgen_rt__vmul(u[h], p.g));
-      const __m256i pe = _mm256_add_epi64(admitgen_rt__vmul(e, p.er), admitgen_rt__vmul(a, p.pi));
-      const __m256i a1 = admitgen_rt__vadd_tz(a, pa, &sh), e1 = admitgen_rt__vadd_tz(e, pe, &sh);
-      if (commit) {
-        admitgen_rt__vstore32(xi + 4 * h, a1);
-        admitgen_rt__vstore32(eta + 4 * h, e1);
-      }
-      acc[h] = _mm256_add_epi64(acc[h], _mm256_add_epi64(admitgen_rt__vmul(a1, p.cr), admitgen_rt__vmul(e1, p.ci)));
-    }
-  }
-  {
-    const admitgen_rt__vshift sh = admitgen_rt__vshift_make(t->acc_shift);
-    const __m256i half = _mm256_set1_epi64x((long long)((int64_t)1 << (t->acc_shift - 1)));
-    for (h = 0; h < 2; ++h) admitgen_rt__voutput(io, base + b + 4u * (size_t)h, acc[h], &sh, half);
-  }
-  if (commit && st->rows > 0) { /* u^n overwrites u^{n-rows}, which this block has just read */
-    int32_t *row = st->hist + (size_t)new_head * n + b;
-    for (h = 0; h < 2; ++h) admitgen_rt__vstore32(row + 4 * h, u[h]);
-  }
+static inline __m256i admitgen_rt__vclamp_avx2(__m256i v, __m256i lo, __m256i hi) {
+  v = _mm256_blendv_epi8(v, hi, _mm256_cmpgt_epi64(v, hi));
+  return _mm256_blendv_epi8(v, lo, _mm256_cmpgt_epi64(lo, v));
 }
+
+/* admitgen_rt__add_tz on 4 lanes: trunc(old + prod / 2^s) saturated to int32. */
+static inline __m256i admitgen_rt__vadd_tz_avx2(__m256i old, __m256i prod, const admitgen_rt__vshift *k) {
+  const __m256i zero = _mm256_setzero_si256();
+  __m256i v = _mm256_add_epi64(old, admitgen_rt__vfloor_shr_avx2(prod, k));
+  const __m256i exact = _mm256_cmpeq_epi64(_mm256_and_si256(prod, k->mask), zero);
+  v = _mm256_sub_epi64(v, _mm256_andnot_si256(exact, _mm256_cmpgt_epi64(zero, v))); /* +1 if v < 0 and inexact */
+  return admitgen_rt__vclamp_avx2(v, _mm256_set1_epi64x(INT32_MIN), _mm256_set1_epi64x(INT32_MAX));
+}
+
+#define ADMITGEN_RT_V(name) admitgen_rt__##name##_avx2
+#define ADMITGEN_RT_VH 2 /* 8 nodes: 16 vector registers */
+#include "admitgen_rt_qblock_x86.h"
+#undef ADMITGEN_RT_V
+#undef ADMITGEN_RT_VH
+
+/* AVX-512 (F + VL, on 256-bit vectors): native 64-bit arithmetic shift, 64-bit min/max and mask registers
+ * replace the bias trick, the blends and the compare-and-subtract of the AVX2 primitives. Same results. */
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2,avx512f,avx512vl"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2,avx512f,avx512vl")
+#endif
+static inline __m256i admitgen_rt__vfloor_shr_avx512(__m256i v, const admitgen_rt__vshift *k) {
+  return _mm256_sra_epi64(v, k->count);
+}
+
+static inline __m256i admitgen_rt__vclamp_avx512(__m256i v, __m256i lo, __m256i hi) {
+  return _mm256_max_epi64(_mm256_min_epi64(v, hi), lo);
+}
+
+static inline __m256i admitgen_rt__vadd_tz_avx512(__m256i old, __m256i prod, const admitgen_rt__vshift *k) {
+  __m256i v = _mm256_add_epi64(old, _mm256_sra_epi64(prod, k->count));
+  const __mmask8 adjust = _mm256_mask_cmplt_epi64_mask(_mm256_test_epi64_mask(prod, k->mask), v, _mm256_setzero_si256());
+  v = _mm256_mask_add_epi64(v, adjust, v, _mm256_set1_epi64x(1)); /* +1 if v < 0 and inexact */
+  return admitgen_rt__vclamp_avx512(v, _mm256_set1_epi64x(INT32_MIN), _mm256_set1_epi64x(INT32_MAX));
+}
+
+#define ADMITGEN_RT_V(name) admitgen_rt__##name##_avx512
+#define ADMITGEN_RT_VH 4 /* 16 nodes: 32 vector registers, half the per-block coefficient set-up */
+#include "admitgen_rt_qblock_x86.h"
+#undef ADMITGEN_RT_V
+#undef ADMITGEN_RT_VH
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
 
 #if defined(__clang__)
 #pragma clang attribute pop

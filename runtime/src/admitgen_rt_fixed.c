@@ -135,10 +135,14 @@ static void admitgen_rt__qframe(const admitgen_rt__qtab *t, const admitgen_rt__q
   if (simd) {
     const int32_t new_head = st->rows > 0 ? admitgen_rt__ring_advance(st->head, 1, st->rows) : 0;
     const size_t base = (size_t)f * (size_t)io->stride;
-    for (; done + ADMITGEN_RT_QVEC <= st->n; done += ADMITGEN_RT_QVEC)
 #if ADMITGEN_RT_HAVE_AVX2
+    if (simd == 2)
+      for (; done + ADMITGEN_RT_QVEC_AVX512 <= st->n; done += ADMITGEN_RT_QVEC_AVX512)
+        admitgen_rt__qblock_avx512(t, st, io, base, (size_t)done, new_head, commit);
+    for (; done + ADMITGEN_RT_QVEC <= st->n; done += ADMITGEN_RT_QVEC)
       admitgen_rt__qblock_avx2(t, st, io, base, (size_t)done, new_head, commit);
 #else
+    for (; done + ADMITGEN_RT_QVEC <= st->n; done += ADMITGEN_RT_QVEC)
       admitgen_rt__qblock_neon(t, st, io, base, (size_t)done, new_head, commit);
 #endif
   }

@@ -100,13 +100,16 @@ static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) {
 #define ADMITGEN_RT_HAVE_NEON 0
 #endif
 
-/* Instruction set of a call: ADMITGEN_RT_ISA_BEST picks the fastest the CPU has; the tests force SCALAR to
- * prove the vector kernels bit-identical to the reference. */
+/* Instruction set of a call: ADMITGEN_RT_ISA_BEST picks the fastest the CPU has; the tests force SCALAR (and
+ * AVX2, below AVX-512) to prove every vector kernel bit-identical to the reference. admitgen_rt__use_simd
+ * returns 0 (scalar), 1 (AVX2 or NEON) or 2 (AVX-512 F+VL, for the fixed-point kernels). */
 #define ADMITGEN_RT_ISA_SCALAR 0
 #define ADMITGEN_RT_ISA_BEST 1
+#define ADMITGEN_RT_ISA_AVX2 2
 static inline int admitgen_rt__use_simd(int isa) {
 #if ADMITGEN_RT_HAVE_AVX2
-  return isa != ADMITGEN_RT_ISA_SCALAR && __builtin_cpu_supports("avx2");
+  if (isa == ADMITGEN_RT_ISA_SCALAR || !__builtin_cpu_supports("avx2")) return 0;
+  return isa != ADMITGEN_RT_ISA_AVX2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") ? 2 : 1;
 #elif ADMITGEN_RT_HAVE_NEON
   return isa != ADMITGEN_RT_ISA_SCALAR;
 #else
@@ -176,12 +179,15 @@ typedef struct admitgen_rt__qio {
  * of one frame without changing the state (history). */
 void admitgen_rt__qcall(const admitgen_rt__qtab *t, int32_t *x, int32_t *xi, int32_t *eta, int32_t *hist, int32_t n,
                         int32_t *head, const admitgen_rt__qio *io, int32_t n_frames, int commit, int isa);
-/* Vector fused pass of frame f over ADMITGEN_RT_QVEC nodes from b (AVX2: 8, NEON: 4); new_head: the ring
- * row u^n goes to. The scalar pass does the n % ADMITGEN_RT_QVEC remaining nodes. */
+/* Vector fused pass of frame f over ADMITGEN_RT_QVEC nodes from b (AVX2: 8, AVX-512: 16, NEON: 4); new_head:
+ * the ring row u^n goes to. The scalar pass does the remaining nodes. */
 #if ADMITGEN_RT_HAVE_AVX2
 #define ADMITGEN_RT_QVEC 8
 void admitgen_rt__qblock_avx2(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
                               size_t base, size_t b, int32_t new_head, int commit);
+#define ADMITGEN_RT_QVEC_AVX512 16
+void admitgen_rt__qblock_avx512(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
+                                size_t base, size_t b, int32_t new_head, int commit);
 /* Float fused pass of one frame over nodes [0, n - n % 16) (same operations as the generic pass); returns
  * that count. */
 int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int commit);

@@ -53,12 +53,19 @@ static uint32_t rt_rng_next(uint32_t *s) {
 }
 #endif
 
-static const char *rt_simd_name(void) {
+static const char *rt_simd_name(int isa, int fixed) {
+  static const char *const names[3] = {"none", "AVX2", "AVX-512"};
 #if ADMITGEN_RT_HAVE_AVX2
-  return admitgen_rt__use_simd(ADMITGEN_RT_ISA_BEST) ? "AVX2" : "none: CPU without AVX2";
+  return names[fixed ? admitgen_rt__use_simd(isa) : (admitgen_rt__use_simd(isa) > 0)]; /* f32: AVX2 at most */
 #elif ADMITGEN_RT_HAVE_NEON
+  (void)isa;
+  (void)fixed;
+  (void)names;
   return "NEON";
 #else
+  (void)isa;
+  (void)fixed;
+  (void)names;
   return "none on this target: the comparison is trivial";
 #endif
 }
