@@ -1,13 +1,15 @@
 /*
- * admitgen_rt_avx2.c - x86-64 AVX2 kernels, compiled for AVX2 by a target pragma (the rest of the library
- * stays baseline x86-64) and chosen at run time by __builtin_cpu_supports("avx2") (admitgen_rt_internal.h).
+ * admitgen_rt_avx2.c - x86-64 vector kernels, compiled for AVX2 (and AVX-512 F+VL) by target pragmas, one
+ * section each (the rest of the library stays baseline x86-64), chosen at run time by
+ * __builtin_cpu_supports (admitgen_rt_internal.h).
  *
- * Fixed point: 8 nodes per block, two vectors of 4 int64 lanes each holding a sign-extended Q1.31 value,
+ * Fixed point (block body: admitgen_rt_qblock_x86.h): AVX2 8 nodes per block, two vectors of 4 int64 lanes each holding a sign-extended Q1.31 value,
  * so _mm256_mul_epi32 forms the exact 32x32 -> 64-bit products the scalar kernel forms. AVX2 has no 64-bit
  * arithmetic right shift; floor(v / 2^s) is computed exactly as ((v + 2^63) >>> s) - 2^(63 - s) (the bias
  * makes v non-negative as an unsigned number; 2^63 is divisible by 2^s). Rounding toward zero of the new
  * state, saturation and the round-half-up output then follow the scalar definitions
  * (admitgen_rt__add_tz, admitgen_rt__output) operation for operation: the results are bit-identical.
+ * AVX-512: 16 nodes per block with native 64-bit shifts, min/max and masks (same results).
  * Float: the operations of the generic fused frame pass (admitgen_rt_process_f32.c) in the same order, without
  * FMA (which would round differently): bit-identical too.
  */
@@ -151,6 +153,12 @@ static inline __m256i admitgen_rt__vadd_tz_avx2(__m256i old, __m256i prod, const
 #undef ADMITGEN_RT_V
 #undef ADMITGEN_RT_VH
 
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+
 /* AVX-512 (F + VL, on 256-bit vectors): native 64-bit arithmetic shift, 64-bit min/max and mask registers
  * replace the bias trick, the blends and the compare-and-subtract of the AVX2 primitives. Same results. */
 #if defined(__clang__)
@@ -185,11 +193,6 @@ static inline __m256i admitgen_rt__vadd_tz_avx512(__m256i old, __m256i prod, con
 #pragma GCC pop_options
 #endif
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
 #else
 typedef int admitgen_rt__avx2_not_built; /* ISO C forbids an empty translation unit */
 #endif
