@@ -14,15 +14,27 @@
 /* Nodes per block of the scalar frame pass: 4 accumulators fit the registers of a 32-bit core. */
 #define ADMITGEN_RT_QBLOCK 4
 
-static int32_t admitgen_rt__qload(const admitgen_rt__qio *io, size_t idx) {
-  if (io->in32 != NULL) return io->in32[idx];
-  if (io->in16 != NULL) return (int32_t)io->in16[idx] * 65536; /* Q1.15 -> Q1.31, exact */
-  return 0;
+/* Inputs idx0 + k step (k < count) as Q1.31 (u = 0 without input). */
+static void admitgen_rt__qload(const admitgen_rt__qio *io, size_t idx0, size_t step, int32_t *u, int32_t count) {
+  int32_t k;
+  if (io->in32 != NULL) {
+    for (k = 0; k < count; ++k) u[k] = io->in32[idx0 + (size_t)k * step];
+  } else if (io->in16 != NULL) {
+    for (k = 0; k < count; ++k) u[k] = (int32_t)io->in16[idx0 + (size_t)k * step] * 65536; /* Q1.15 -> Q1.31, exact */
+  } else {
+    for (k = 0; k < count; ++k) u[k] = 0;
+  }
 }
 
-static void admitgen_rt__qstore(const admitgen_rt__qio *io, int32_t acc_shift, size_t idx, int64_t acc) {
-  if (io->out32 != NULL) io->out32[idx] = admitgen_rt__output(acc, acc_shift, INT32_MIN, INT32_MAX);
-  if (io->out16 != NULL) io->out16[idx] = (int16_t)admitgen_rt__output(acc, acc_shift, INT16_MIN, INT16_MAX);
+/* Outputs idx0 + k step (k < count) from the accumulators (nothing without output). */
+static void admitgen_rt__qstore(const admitgen_rt__qio *io, int32_t acc_shift, size_t idx0, size_t step,
+                                const int64_t *acc, int32_t count) {
+  int32_t k;
+  if (io->out32 != NULL)
+    for (k = 0; k < count; ++k) io->out32[idx0 + (size_t)k * step] = admitgen_rt__output(acc[k], acc_shift, INT32_MIN, INT32_MAX);
+  if (io->out16 != NULL)
+    for (k = 0; k < count; ++k)
+      io->out16[idx0 + (size_t)k * step] = (int16_t)admitgen_rt__output(acc[k], acc_shift, INT16_MIN, INT16_MAX);
 }
 
 /* Scalar fused pass of frame f over nodes [i0, i1). */
@@ -37,10 +49,8 @@ static void admitgen_rt__qframe_scalar(const admitgen_rt__qtab *t, const admitge
     int32_t u[ADMITGEN_RT_QBLOCK];
     int64_t acc[ADMITGEN_RT_QBLOCK];
     int32_t j, k, q;
-    for (j = 0; j < nb; ++j) {
-      u[j] = admitgen_rt__qload(io, base + (size_t)(b + j));
-      acc[j] = (int64_t)d0 * u[j];
-    }
+    admitgen_rt__qload(io, base + (size_t)b, 1u, u, nb);
+    for (j = 0; j < nb; ++j) acc[j] = (int64_t)d0 * u[j];
     for (k = 1; k < t->n_fir; ++k) {
       const int32_t d = admitgen_rt__qfir(t, k);
       const int32_t *row = st->hist + (size_t)admitgen_rt__ring_row(st->head, k, rows) * n + (size_t)b;
@@ -68,7 +78,7 @@ static void admitgen_rt__qframe_scalar(const admitgen_rt__qtab *t, const admitge
         }
       }
     }
-    for (j = 0; j < nb; ++j) admitgen_rt__qstore(io, t->acc_shift, base + (size_t)(b + j), acc[j]);
+    admitgen_rt__qstore(io, t->acc_shift, base + (size_t)b, 1u, acc, nb);
     if (commit && rows > 0) { /* u^n overwrites u^{n-rows}, which this block has just read */
       int32_t *row = st->hist + (size_t)new_head * n + (size_t)b;
       for (j = 0; j < nb; ++j) row[j] = u[j];
@@ -87,7 +97,7 @@ static void admitgen_rt__qchunk(const admitgen_rt__qtab *t, const admitgen_rt__q
   const int32_t *u = ub + rows;
   int32_t f, k, q;
   for (k = 1; k <= rows; ++k) ub[rows - k] = st->hist[(size_t)admitgen_rt__ring_row(st->head, k, rows) * n + (size_t)i];
-  for (f = 0; f < nf; ++f) ub[rows + f] = admitgen_rt__qload(io, (size_t)(f0 + f) * (size_t)io->stride + (size_t)i);
+  admitgen_rt__qload(io, (size_t)f0 * (size_t)io->stride + (size_t)i, (size_t)io->stride, ub + rows, nf);
   {
     const int32_t d0 = t->n_fir > 0 ? admitgen_rt__qfir(t, 0) : 0;
     for (f = 0; f < nf; ++f) acc[f] = (int64_t)d0 * u[f];
@@ -119,7 +129,7 @@ static void admitgen_rt__qchunk(const admitgen_rt__qtab *t, const admitgen_rt__q
     *pxi = a;
     *peta = e;
   }
-  for (f = 0; f < nf; ++f) admitgen_rt__qstore(io, t->acc_shift, (size_t)(f0 + f) * (size_t)io->stride + (size_t)i, acc[f]);
+  admitgen_rt__qstore(io, t->acc_shift, (size_t)f0 * (size_t)io->stride + (size_t)i, (size_t)io->stride, acc, nf);
   if (rows > 0) {
     const int32_t new_head = admitgen_rt__ring_advance(st->head, nf, rows);
     for (k = 1; k <= rows; ++k)

@@ -30,6 +30,13 @@ static inline int64_t admitgen_rt__floor_shr(int64_t v, int32_t s) {
   return v >= 0 ? (v >> s) : ~((~v) >> s);
 }
 
+/* v saturated to int32. The range test is one 64-bit add and a test of the high word, so a 32-bit core keeps
+ * the result in one register (and multiplies it with SMLAL). */
+static inline int32_t admitgen_rt__sat32(int64_t v) {
+  if (((uint64_t)v + 0x80000000u) >> 32 != 0u) return v < 0 ? INT32_MIN : INT32_MAX;
+  return (int32_t)v;
+}
+
 /* old + prod / 2^s rounded toward zero of the result (magnitude truncation), saturated to int32.
  * Magnitude truncation makes every state contract strictly under zero input (|x'| <= r |x|, r < 1 in
  * exact arithmetic, rounding only shrinks it further), so a state reaches exactly 0: no limit cycle. */
@@ -37,15 +44,13 @@ static inline int32_t admitgen_rt__add_tz(int32_t old, int64_t prod, int32_t s) 
   int64_t v = (int64_t)old + admitgen_rt__floor_shr(prod, s);
   const uint64_t mask = ((uint64_t)1 << s) - 1u;
   if (v < 0 && ((uint64_t)prod & mask) != 0u) v += 1;
-  if (v > INT32_MAX) v = INT32_MAX;
-  if (v < INT32_MIN) v = INT32_MIN;
-  return (int32_t)v;
+  return admitgen_rt__sat32(v);
 }
 
 /* Rounds the accumulator to the output (round half up) and saturates to [lo, hi]. */
 static inline int32_t admitgen_rt__output(int64_t acc, int32_t shift, int32_t lo, int32_t hi) {
-  const int64_t v = admitgen_rt__floor_shr(acc + ((int64_t)1 << (shift - 1)), shift);
-  return v > hi ? hi : (v < lo ? lo : (int32_t)v);
+  const int32_t v = admitgen_rt__sat32(admitgen_rt__floor_shr(acc + ((int64_t)1 << (shift - 1)), shift));
+  return v > hi ? hi : (v < lo ? lo : v);
 }
 
 /* Ring of past inputs, rows [rows][n_nodes]: u^{n-k} (k = 1..rows) is in row head + k - 1 (mod rows). */
