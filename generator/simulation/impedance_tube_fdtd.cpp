@@ -10,7 +10,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -91,17 +90,18 @@ class WallF32 final : public RuntimeWall {
   admitgen_rt_f32 inst_{};
 };
 
-/// q31 (T = int32_t) or q15 (T = int16_t). The probe instance gets a byte copy of the real one's state
-/// (same model and node count, so the same layout) and runs one frame with u = 0.
+/// q31 (T = int32_t) or q15 (T = int16_t): the runtime's history/commit pair (history = the output of a
+/// u = 0 frame, bit-exact, state untouched).
 template <typename T, typename Model, typename Inst, int B>
 class WallFixed final : public RuntimeWall {
  public:
   using Bytes = std::size_t (*)(const Model*, int32_t);
   using Init = admitgen_rt_result (*)(Inst*, const Model*, int32_t, int32_t, void*, std::size_t);
-  using Process = void (*)(Inst*, const T*, T*, int32_t, int32_t);
+  using History = void (*)(const Inst*, T*);
+  using Commit = void (*)(Inst*, const T*, T*);
 
-  WallFixed(const codegen::FixedCoefficients& c, int fs, Bytes bytes, Init init, Process process)
-      : process_(process), out_scale_(std::ldexp(1.0, c.out_shift - B)), h0_(c.dequantised(fs).h0()) {
+  WallFixed(const codegen::FixedCoefficients& c, int fs, Bytes bytes, Init init, History history, Commit commit)
+      : history_(history), commit_(commit), out_scale_(std::ldexp(1.0, c.out_shift - B)), h0_(c.dequantised(fs).h0()) {
     for (auto d : c.fir) fir_.push_back(static_cast<T>(d));
     for (const auto& t : c.real) real_.insert(real_.end(), {static_cast<T>(t.eps), static_cast<T>(t.shift), static_cast<T>(t.c)});
     for (const auto& t : c.pair)
@@ -111,19 +111,14 @@ class WallFixed final : public RuntimeWall {
               static_cast<int32_t>(c.real.size()), static_cast<int32_t>(c.pair.size()), c.out_shift, c.acc_shift,
               fir_.data(), real_.data(), pair_.data()};
     mem_ = std::make_unique<StateMemory>(bytes(&model_, 1));
-    probe_mem_ = std::make_unique<StateMemory>(bytes(&model_, 1));
     require(init(&inst_, &model_, fs, 1, mem_->data(), mem_->bytes()), "fixed point");
-    require(init(&probe_, &model_, fs, 1, probe_mem_->data(), probe_mem_->bytes()), "fixed point");
   }
   double h0() const override { return h0_; }
   double quantum() const override { return std::max(out_scale_, std::ldexp(1.0, -B)); }
   double history() override {
-    std::memcpy(probe_mem_->data(), mem_->data(), mem_->bytes());
-    probe_.head = inst_.head;
-    const T zero = 0;
-    T y = 0;
-    process_(&probe_, &zero, &y, 1, 1);
-    return static_cast<double>(y) * out_scale_;
+    T s = 0;
+    history_(&inst_, &s);
+    return static_cast<double>(s) * out_scale_;
   }
   double commit(double p) override {
     constexpr double full = static_cast<double>(std::int64_t{1} << B);
@@ -134,17 +129,18 @@ class WallFixed final : public RuntimeWall {
     }
     const T u = static_cast<T>(q);
     T y = 0;
-    process_(&inst_, &u, &y, 1, 1);
+    commit_(&inst_, &u, &y);
     return static_cast<double>(y) * out_scale_;
   }
 
  private:
-  Process process_;
+  History history_;
+  Commit commit_;
   double out_scale_, h0_;
   std::vector<T> fir_, real_, pair_;
   Model model_{};
-  std::unique_ptr<StateMemory> mem_, probe_mem_;
-  Inst inst_{}, probe_{};
+  std::unique_ptr<StateMemory> mem_;
+  Inst inst_{};
 };
 
 std::unique_ptr<RuntimeWall> runtime_wall(const codegen::EmittedRate& rate, codegen::Format format) {
@@ -154,11 +150,13 @@ std::unique_ptr<RuntimeWall> runtime_wall(const codegen::EmittedRate& rate, code
     case codegen::Format::q31:
       if (!rate.fixed) break;
       return std::make_unique<WallFixed<int32_t, admitgen_rt_model_q31, admitgen_rt_q31, 31>>(
-          *rate.fixed, rate.fs_hz, admitgen_rt_state_bytes_q31, admitgen_rt_init_q31, admitgen_rt_process_q31);
+          *rate.fixed, rate.fs_hz, admitgen_rt_state_bytes_q31, admitgen_rt_init_q31, admitgen_rt_history_q31,
+          admitgen_rt_commit_q31);
     case codegen::Format::q15:
       if (!rate.fixed) break;
       return std::make_unique<WallFixed<int16_t, admitgen_rt_model_q15, admitgen_rt_q15, 15>>(
-          *rate.fixed, rate.fs_hz, admitgen_rt_state_bytes_q15, admitgen_rt_init_q15, admitgen_rt_process_q15);
+          *rate.fixed, rate.fs_hz, admitgen_rt_state_bytes_q15, admitgen_rt_init_q15, admitgen_rt_history_q15,
+          admitgen_rt_commit_q15);
   }
   throw InputError(fmt::format("no {} tables were emitted for {} Hz", codegen::format_name(format), rate.fs_hz));
 }

@@ -33,8 +33,11 @@
  * mem must be aligned to ADMITGEN_RT_ALIGN bytes. Buffers: frame f of node i is in[f*stride + i], so
  * one call serves a planar mono buffer (n_nodes 1, stride 1), an interleaved multichannel buffer
  * (n_nodes = channels = stride) or every boundary node of a solver (one frame, n_nodes nodes).
- * State layout is structure-of-arrays, state[term][node], so each term's update is one loop over nodes
- * that the compiler vectorises.
+ * State layout is structure-of-arrays, state[term][node]. Kernels: up to 8 nodes, each node runs a chunk of
+ * frames through one term at a time with the state in a register (mono/stereo audio); more nodes, one fused
+ * pass per frame over blocks of nodes with the accumulators in registers, vectorised (AVX2 chosen at run
+ * time on x86-64, NEON on aarch64; define ADMITGEN_RT_NO_SIMD for scalar only). All paths give identical
+ * bits (docs/runtime.md).
  *
  * Formats: _f32 (float), _q31 (Q1.31 = TI Q0.31 data), _q15 (Q1.15 data). The fixed-point kernels keep
  * Q1.31 states for both formats, 64-bit accumulators, per-term coefficient exponents and saturating
@@ -196,6 +199,12 @@ ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_q31(admitgen_rt_q31 
                                                                 int32_t fs_hz);
 void admitgen_rt_reset_q31(admitgen_rt_q31 *inst);
 void admitgen_rt_process_q31(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride);
+/** History of every node (pHist[n_nodes], output units): exactly the output process would give next for u = 0,
+ *  state unchanged. With the instantaneous gain h0 (the header's dequantised d_0 * 2^(y_exp - 31)):
+ *  y^n = h0 u^n + s^{n-1} up to the output rounding. */
+void admitgen_rt_history_q31(const admitgen_rt_q31 *inst, int32_t *pHist);
+/** Commits one frame u^n (pU[n_nodes]) after an implicit solve; writes y^n to pY if not NULL. */
+void admitgen_rt_commit_q31(admitgen_rt_q31 *inst, const int32_t *pU, int32_t *pY);
 
 size_t admitgen_rt_state_bytes_q15(const admitgen_rt_model_q15 *model, int32_t n_nodes);
 ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_q15(admitgen_rt_q15 *inst, const admitgen_rt_model_q15 *model,
@@ -204,6 +213,8 @@ ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_q15(admitgen_rt_q15 
                                                                 int32_t fs_hz);
 void admitgen_rt_reset_q15(admitgen_rt_q15 *inst);
 void admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride);
+void admitgen_rt_history_q15(const admitgen_rt_q15 *inst, int16_t *pHist);
+void admitgen_rt_commit_q15(admitgen_rt_q15 *inst, const int16_t *pU, int16_t *pY);
 
 #ifdef __cplusplus
 }

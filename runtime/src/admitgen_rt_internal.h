@@ -30,6 +30,13 @@ static inline int64_t admitgen_rt__floor_shr(int64_t v, int32_t s) {
   return v >= 0 ? (v >> s) : ~((~v) >> s);
 }
 
+/* v saturated to int32. The range test is one 64-bit add and a test of the high word, so a 32-bit core keeps
+ * the result in one register (and multiplies it with SMLAL). */
+static inline int32_t admitgen_rt__sat32(int64_t v) {
+  if (((uint64_t)v + 0x80000000u) >> 32 != 0u) return v < 0 ? INT32_MIN : INT32_MAX;
+  return (int32_t)v;
+}
+
 /* old + prod / 2^s rounded toward zero of the result (magnitude truncation), saturated to int32.
  * Magnitude truncation makes every state contract strictly under zero input (|x'| <= r |x|, r < 1 in
  * exact arithmetic, rounding only shrinks it further), so a state reaches exactly 0: no limit cycle. */
@@ -37,67 +44,173 @@ static inline int32_t admitgen_rt__add_tz(int32_t old, int64_t prod, int32_t s) 
   int64_t v = (int64_t)old + admitgen_rt__floor_shr(prod, s);
   const uint64_t mask = ((uint64_t)1 << s) - 1u;
   if (v < 0 && ((uint64_t)prod & mask) != 0u) v += 1;
-  if (v > INT32_MAX) v = INT32_MAX;
-  if (v < INT32_MIN) v = INT32_MIN;
-  return (int32_t)v;
-}
-
-/* One real term over all nodes: x += eps (u - x) (Q1.31 states, eps = m * 2^-s), acc += c x. */
-static inline void admitgen_rt__real_q(int32_t *ADMITGEN_RT_RESTRICT x, const int32_t *ADMITGEN_RT_RESTRICT u,
-                                       int64_t *ADMITGEN_RT_RESTRICT acc, int32_t n, int32_t m, int32_t s, int32_t c) {
-  int32_t i;
-  for (i = 0; i < n; ++i) {
-    const int32_t v = admitgen_rt__add_tz(x[i], (int64_t)m * ((int64_t)u[i] - (int64_t)x[i]), s);
-    x[i] = v;
-    acc[i] += (int64_t)c * v;
-  }
-}
-
-/* One pair over all nodes (coupled form, delta coefficients er, pi, g at scale 2^-s). */
-static inline void admitgen_rt__pair_q(int32_t *ADMITGEN_RT_RESTRICT xi, int32_t *ADMITGEN_RT_RESTRICT eta,
-                                       const int32_t *ADMITGEN_RT_RESTRICT u, int64_t *ADMITGEN_RT_RESTRICT acc,
-                                       int32_t n, int32_t er, int32_t pi, int32_t g, int32_t s, int32_t cr,
-                                       int32_t ci) {
-  int32_t i;
-  for (i = 0; i < n; ++i) {
-    const int32_t a = xi[i], b = eta[i];
-    const int32_t a1 = admitgen_rt__add_tz(a, (int64_t)er * a - (int64_t)pi * b + (int64_t)g * u[i], s);
-    const int32_t b1 = admitgen_rt__add_tz(b, (int64_t)er * b + (int64_t)pi * a, s);
-    xi[i] = a1;
-    eta[i] = b1;
-    acc[i] += (int64_t)cr * a1 + (int64_t)ci * b1;
-  }
-}
-
-/* acc = d0 u + sum_k d_k u^{n-k} over the ring of past inputs (rows of n nodes). */
-static inline void admitgen_rt__fir_q(int64_t *ADMITGEN_RT_RESTRICT acc, const int32_t *ADMITGEN_RT_RESTRICT u,
-                                      const int32_t *ADMITGEN_RT_RESTRICT hist, int32_t n, int32_t head,
-                                      int32_t rows, int32_t k, int32_t d) {
-  /* k == 0: the current input initialises the accumulator; k >= 1: row of u^{n-k}. */
-  int32_t i;
-  if (k == 0) {
-    for (i = 0; i < n; ++i) acc[i] = (int64_t)d * u[i];
-  } else {
-    const int32_t r = head + k - 1 < rows ? head + k - 1 : head + k - 1 - rows; /* no division */
-    const int32_t *row = hist + (size_t)r * (size_t)n;
-    for (i = 0; i < n; ++i) acc[i] += (int64_t)d * row[i];
-  }
-}
-
-/* Pushes the current input into the ring (it becomes u^{n-1}); returns the new head. */
-static inline int32_t admitgen_rt__push_q(int32_t *hist, const int32_t *u, int32_t n, int32_t head, int32_t rows) {
-  int32_t i;
-  int32_t *row;
-  head = head == 0 ? rows - 1 : head - 1;
-  row = hist + (size_t)head * (size_t)n;
-  for (i = 0; i < n; ++i) row[i] = u[i];
-  return head;
+  return admitgen_rt__sat32(v);
 }
 
 /* Rounds the accumulator to the output (round half up) and saturates to [lo, hi]. */
 static inline int32_t admitgen_rt__output(int64_t acc, int32_t shift, int32_t lo, int32_t hi) {
-  const int64_t v = admitgen_rt__floor_shr(acc + ((int64_t)1 << (shift - 1)), shift);
-  return v > hi ? hi : (v < lo ? lo : (int32_t)v);
+  const int32_t v = admitgen_rt__sat32(admitgen_rt__floor_shr(acc + ((int64_t)1 << (shift - 1)), shift));
+  return v > hi ? hi : (v < lo ? lo : v);
 }
+
+/* Ring of past inputs, rows [rows][n_nodes]: u^{n-k} (k = 1..rows) is in row head + k - 1 (mod rows). */
+static inline int32_t admitgen_rt__ring_row(int32_t head, int32_t k, int32_t rows) {
+  const int32_t r = head + k - 1;
+  return r < rows ? r : r - rows; /* no division: head < rows and k <= rows */
+}
+/* The ring position after advancing n frames (u^n becomes u^{n-1}: head moves back by one per frame). */
+static inline int32_t admitgen_rt__ring_advance(int32_t head, int32_t frames, int32_t rows) {
+  int32_t h = head - frames;
+  while (h < 0) h += rows;
+  return h;
+}
+
+/* Float state updates, in the one evaluation order every float path uses (docs/runtime.md): each new state
+ * is the old one plus one rounded increment (delta form: full precision for slow poles), the increment
+ * grouped so that the mono path, which is bound by the latency of the recursion, waits for as few
+ * operations as possible (the pair's xi -> xi dependency: multiply, add, add):
+ *   x' = x + eps (u - x);  xi' = xi + (e_r xi + (g u - p_i eta));  eta' = eta + (e_r eta + p_i xi). */
+static inline float admitgen_rt__real_f32(float x, float u, float eps) { return x + eps * (u - x); }
+static inline float admitgen_rt__xi_f32(float a, float e, float u, float er, float pi, float g) {
+  return a + (er * a + (g * u - pi * e));
+}
+static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) { return e + (er * e + pi * a); }
+
+/* ------------------------------------------------------------------------------------------------ */
+/* Kernel organisation (docs/runtime.md):
+ *  - small-n path (n_nodes <= ADMITGEN_RT_SMALL_N): per node, frames inside each term (CMSIS-DSP biquad
+ *    style): a term's state stays in a register across a chunk of ADMITGEN_RT_CHUNK frames whose
+ *    accumulators sit in a stack array;
+ *  - block path: per frame, one fused pass over a block of nodes updates every term with the block's
+ *    accumulators in registers; SIMD kernels (AVX2 on x86-64, selected at run time; NEON on aarch64)
+ *    process whole vector blocks and the scalar kernel the remainder.
+ * Integer arithmetic is exact in 64 bits whatever the order, so every path is bit-identical; the float
+ * kernels use one evaluation order on every path (and ISO C forbids contracting it into FMAs unless
+ * FP_CONTRACT is on, which C99 mode leaves off in GCC), so they are bit-identical too. */
+#define ADMITGEN_RT_SMALL_N 8
+/* Frames per chunk of the small-n path; its stack arrays hold 64 + CHUNK inputs and CHUNK accumulators
+ * (about 0.9 KiB for the fixed formats at 32 on Cortex-M4): define smaller for a tight MCU stack. */
+#ifndef ADMITGEN_RT_CHUNK
+#define ADMITGEN_RT_CHUNK 32
+#endif
+
+#if !defined(ADMITGEN_RT_NO_SIMD) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define ADMITGEN_RT_HAVE_AVX2 1
+#else
+#define ADMITGEN_RT_HAVE_AVX2 0
+#endif
+#if !defined(ADMITGEN_RT_NO_SIMD) && defined(__aarch64__) && defined(__ARM_NEON)
+#define ADMITGEN_RT_HAVE_NEON 1
+#else
+#define ADMITGEN_RT_HAVE_NEON 0
+#endif
+
+/* Instruction set of a call: ADMITGEN_RT_ISA_BEST picks the fastest the CPU has; the tests force SCALAR (and
+ * AVX2, below AVX-512) to prove every vector kernel bit-identical to the reference. admitgen_rt__use_simd
+ * returns 0 (scalar), 1 (AVX2 or NEON) or 2 (AVX-512 F+VL, for the fixed-point kernels). */
+#define ADMITGEN_RT_ISA_SCALAR 0
+#define ADMITGEN_RT_ISA_BEST 1
+#define ADMITGEN_RT_ISA_AVX2 2
+static inline int admitgen_rt__use_simd(int isa) {
+#if ADMITGEN_RT_HAVE_AVX2
+  if (isa == ADMITGEN_RT_ISA_SCALAR || !__builtin_cpu_supports("avx2")) return 0;
+  return isa != ADMITGEN_RT_ISA_AVX2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") ? 2 : 1;
+#elif ADMITGEN_RT_HAVE_NEON
+  return isa != ADMITGEN_RT_ISA_SCALAR;
+#else
+  (void)isa;
+  return 0;
+#endif
+}
+
+/* Fixed-point coefficients of either format: q31 tables (int32) or q15 tables (int16), one set NULL. */
+typedef struct admitgen_rt__qtab {
+  const int32_t *fir32, *real32, *pair32;
+  const int16_t *fir16, *real16, *pair16;
+  int32_t n_fir, n_real, n_pair;
+  int32_t bits;      /* 31 or 15: state-update coefficients are m * 2^-(bits + shift) */
+  int32_t acc_shift; /* accumulator -> output */
+} admitgen_rt__qtab;
+
+static inline int32_t admitgen_rt__qfir(const admitgen_rt__qtab *t, int32_t k) {
+  return t->fir32 != NULL ? t->fir32[k] : (int32_t)t->fir16[k];
+}
+/* A term's coefficients, total shifts s = bits + shift. */
+typedef struct admitgen_rt__qreal_coef {
+  int32_t m, s, c;
+} admitgen_rt__qreal_coef;
+typedef struct admitgen_rt__qpair_coef {
+  int32_t er, pi, g, s, cr, ci;
+} admitgen_rt__qpair_coef;
+static inline admitgen_rt__qreal_coef admitgen_rt__qreal(const admitgen_rt__qtab *t, int32_t q) {
+  admitgen_rt__qreal_coef r;
+  int32_t v[3], j;
+  for (j = 0; j < 3; ++j) v[j] = t->real32 != NULL ? t->real32[3 * q + j] : (int32_t)t->real16[3 * q + j];
+  r.m = v[0];
+  r.s = t->bits + v[1];
+  r.c = v[2];
+  return r;
+}
+static inline admitgen_rt__qpair_coef admitgen_rt__qpair(const admitgen_rt__qtab *t, int32_t q) {
+  admitgen_rt__qpair_coef p;
+  int32_t v[6], j;
+  for (j = 0; j < 6; ++j) v[j] = t->pair32 != NULL ? t->pair32[6 * q + j] : (int32_t)t->pair16[6 * q + j];
+  p.er = v[0];
+  p.pi = v[1];
+  p.g = v[2];
+  p.s = t->bits + v[3];
+  p.cr = v[4];
+  p.ci = v[5];
+  return p;
+}
+
+/* States of a q31 or q15 instance (identical layouts: Q1.31 states, [term][node]). */
+typedef struct admitgen_rt__qstate {
+  int32_t *x, *xi, *eta, *hist;
+  int32_t n, head, rows; /* rows = n_fir - 1 ring rows (0: no ring) */
+} admitgen_rt__qstate;
+
+/* Data of one call: Q1.31 or Q1.15 input (both NULL: u = 0), output (both NULL: none); frame f of node i
+ * at [f * stride + i]. */
+typedef struct admitgen_rt__qio {
+  const int32_t *in32;
+  const int16_t *in16;
+  int32_t *out32;
+  int16_t *out16;
+  int32_t stride;
+} admitgen_rt__qio;
+
+/* Runs a call of either fixed format on an instance's states (head updated); commit 0 computes the outputs
+ * of one frame without changing the state (history). */
+void admitgen_rt__qcall(const admitgen_rt__qtab *t, int32_t *x, int32_t *xi, int32_t *eta, int32_t *hist, int32_t n,
+                        int32_t *head, const admitgen_rt__qio *io, int32_t n_frames, int commit, int isa);
+/* Vector fused pass of frame f over ADMITGEN_RT_QVEC nodes from b (AVX2: 8, AVX-512: 16, NEON: 4); new_head:
+ * the ring row u^n goes to. The scalar pass does the remaining nodes. */
+#if ADMITGEN_RT_HAVE_AVX2
+#define ADMITGEN_RT_QVEC 8
+void admitgen_rt__qblock_avx2(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
+                              size_t base, size_t b, int32_t new_head, int commit);
+#define ADMITGEN_RT_QVEC_AVX512 16
+void admitgen_rt__qblock_avx512(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
+                                size_t base, size_t b, int32_t new_head, int commit);
+/* Float fused pass of one frame over nodes [0, n - n % 32) (same operations as the generic pass); returns
+ * that count. */
+int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int commit);
+#endif
+#if ADMITGEN_RT_HAVE_NEON
+#define ADMITGEN_RT_QVEC 4
+void admitgen_rt__qblock_neon(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
+                              size_t base, size_t b, int32_t new_head, int commit);
+#endif
+/* Float fused pass of one frame over nodes [i0, n) (in NULL: u = 0; out may be NULL; commit 0: history). */
+void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in, float *out, int32_t i0, int commit);
+/* Fixed-point calls with a forced instruction set (tests). */
+void admitgen_rt__process_q31_isa(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames,
+                                  int32_t stride, int isa);
+void admitgen_rt__process_q15_isa(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames,
+                                  int32_t stride, int isa);
+/* Float call with a forced instruction set (tests). */
+void admitgen_rt__process_f32_isa(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t n_frames,
+                                  int32_t stride, int isa);
 
 #endif /* ADMITGEN_RT_INTERNAL_H */

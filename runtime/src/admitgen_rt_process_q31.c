@@ -1,5 +1,6 @@
 /*
- * admitgen_rt_process_q31.c - q31 kernel.
+ * admitgen_rt_process_q31.c - q31 entry points: block processing, FDTD history/commit (kernel in
+ * admitgen_rt_fixed.c and the vector kernels).
  *
  * @par Scaling and Overflow Behavior
  *   Input and output are Q1.31. States are int32 Q1.31
@@ -18,30 +19,27 @@
  */
 #include "admitgen_rt_internal.h"
 
-void admitgen_rt_process_q31(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride) {
+void admitgen_rt__process_q31_isa(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride,
+                                  int isa) {
   const admitgen_rt_model_q31 *m = inst->model;
-  const int32_t n = inst->n_nodes, rows = m->n_fir - 1;
-  int32_t f, i, k, t;
-  for (f = 0; f < n_frames; ++f) {
-    const int32_t *src = pIn + (size_t)f * (size_t)stride;
-    for (i = 0; i < n; ++i) inst->u[i] = src[i];
-    if (m->n_fir == 0)
-      for (i = 0; i < n; ++i) inst->acc[i] = 0;
-    for (k = 0; k < m->n_fir; ++k)
-      admitgen_rt__fir_q(inst->acc, inst->u, inst->hist, n, inst->head, rows, k, m->fir[k]);
-    for (t = 0; t < m->n_real; ++t) {
-      const int32_t *r = m->real + 3 * t;
-      admitgen_rt__real_q(inst->x + (size_t)t * (size_t)n, inst->u, inst->acc, n, r[0], 31 + r[1], r[2]);
-    }
-    for (t = 0; t < m->n_pair; ++t) {
-      const int32_t *p = m->pair + 6 * t;
-      admitgen_rt__pair_q(inst->xi + (size_t)t * (size_t)n, inst->eta + (size_t)t * (size_t)n, inst->u, inst->acc, n,
-                          p[0], p[1], p[2], 31 + p[3], p[4], p[5]);
-    }
-    if (rows > 0) inst->head = admitgen_rt__push_q(inst->hist, inst->u, n, inst->head, rows);
-    if (pOut != NULL) {
-      int32_t *dst = pOut + (size_t)f * (size_t)stride;
-      for (i = 0; i < n; ++i) dst[i] = (int32_t) admitgen_rt__output(inst->acc[i], m->acc_shift, INT32_MIN, INT32_MAX);
-    }
-  }
+  const admitgen_rt__qtab t = {m->fir, m->real, m->pair, NULL, NULL, NULL, m->n_fir, m->n_real, m->n_pair, 31, m->acc_shift};
+  const admitgen_rt__qio io = {pIn, NULL, pOut, NULL, stride};
+  admitgen_rt__qcall(&t, inst->x, inst->xi, inst->eta, inst->hist, inst->n_nodes, &inst->head, &io, n_frames, 1, isa);
+}
+
+void admitgen_rt_process_q31(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride) {
+  admitgen_rt__process_q31_isa(inst, pIn, pOut, n_frames, stride, ADMITGEN_RT_ISA_BEST);
+}
+
+void admitgen_rt_history_q31(const admitgen_rt_q31 *inst, int32_t *pHist) {
+  /* one frame with u = 0 and commit 0: states and ring unchanged */
+  const admitgen_rt_model_q31 *m = inst->model;
+  const admitgen_rt__qtab t = {m->fir, m->real, m->pair, NULL, NULL, NULL, m->n_fir, m->n_real, m->n_pair, 31, m->acc_shift};
+  const admitgen_rt__qio io = {NULL, NULL, pHist, NULL, inst->n_nodes};
+  int32_t head = inst->head;
+  admitgen_rt__qcall(&t, inst->x, inst->xi, inst->eta, inst->hist, inst->n_nodes, &head, &io, 1, 0, ADMITGEN_RT_ISA_BEST);
+}
+
+void admitgen_rt_commit_q31(admitgen_rt_q31 *inst, const int32_t *pU, int32_t *pY) {
+  admitgen_rt_process_q31(inst, pU, pY, 1, inst->n_nodes);
 }

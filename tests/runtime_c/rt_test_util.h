@@ -1,24 +1,13 @@
 /*
- * rt_test_util.h - helpers of the C runtime tests: a check macro that counts failures, the same
+ * rt_test_util.h - helpers of the C runtime tests: the check macro (rt_check.h), the same
  * xoshiro256** generator as generator/core/rng.hpp (seeded by splitmix64), aligned static memory.
  */
 #ifndef RT_TEST_UTIL_H
 #define RT_TEST_UTIL_H
 
+#include "rt_check.h"
+
 #include <stdint.h>
-#include <stdio.h>
-
-static int rt_failures = 0;
-
-#define RT_CHECK(cond, ...)                                          \
-  do {                                                               \
-    if (!(cond)) {                                                   \
-      ++rt_failures;                                                 \
-      printf("FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);       \
-      printf(__VA_ARGS__);                                           \
-      printf("\n");                                                  \
-    }                                                                \
-  } while (0)
 
 typedef struct rt_rng {
   uint64_t s[4];

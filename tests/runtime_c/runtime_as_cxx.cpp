@@ -1,9 +1,12 @@
 // The C99 runtime and a generated header of every format compiled as C++ (unity build of the runtime
 // sources) with the strict warning set: engines written in C++ include them directly.
+#include "../../runtime/src/admitgen_rt_avx2.c"
 #include "../../runtime/src/admitgen_rt_common.c"
+#include "../../runtime/src/admitgen_rt_fixed.c"
 #include "../../runtime/src/admitgen_rt_init_f32.c"
 #include "../../runtime/src/admitgen_rt_init_q15.c"
 #include "../../runtime/src/admitgen_rt_init_q31.c"
+#include "../../runtime/src/admitgen_rt_neon.c"
 #include "../../runtime/src/admitgen_rt_process_f32.c"
 #include "../../runtime/src/admitgen_rt_process_q15.c"
 #include "../../runtime/src/admitgen_rt_process_q31.c"
