@@ -58,7 +58,10 @@ void fixed_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, c
         r.fail(fmt::format("{}: after {} zero-input samples from {} the state is still {:.0f} LSB (allowed {:.0f}): "
                            "limit cycle / deadband", term_location(fs, m, pair, k), n, from, now, allowed));
     }
-    if (n == bound && std::any_of(out.end() - std::min<long>(n, 16), out.end(), [](std::int32_t v) { return v != 0; }))
+    // zero_decay_bound() = (samples for every state to reach 0) + n_fir + 1, so the last n_fir + 1 outputs
+    // must be exactly 0 (a longer window would include samples before a fast state has decayed).
+    const long window = std::min<long>(n, static_cast<long>(q.fir.size()) + 1);
+    if (n == bound && std::any_of(out.end() - window, out.end(), [](std::int32_t v) { return v != 0; }))
       r.fail(fmt::format("fs {} Hz: output not exactly 0 after {} zero-input samples from {}", fs, n, from));
   }
   j["zero_decay_bound"] = bound;

@@ -23,16 +23,15 @@ constexpr double kMargins[] = {1e-9, 1e-6, 1e-5, 1e-4, 1e-3};
 
 std::string hz(double f) { return std::isinf(f) ? "infinity" : fmt::format("{:.4g} Hz", f); }
 
-/// Frequencies (Hz) to add as constraints for each negative band of a discrete filter.
+/// Frequencies (Hz) to add as constraints for each negative band of a discrete filter: its minimum and
+/// 9 points spanning the band (edges included), so one round covers the whole band.
 std::vector<double> violations(const codegen::DiscreteModel& m) {
   const auto r = checks::discrete_passivity(m);
   std::vector<double> f;
   for (const auto& b : r.bands) {
-    f.push_back(std::min(b.at, 0.5 * m.fs_hz));
-    f.push_back(b.lo);
     const double hi = std::min(b.hi, 0.5 * m.fs_hz);
-    f.push_back(hi);
-    f.push_back(0.5 * (b.lo + hi));
+    f.push_back(std::min(b.at, 0.5 * m.fs_hz));
+    for (int i = 0; i <= 8; ++i) f.push_back(b.lo + (hi - b.lo) * i / 8.0);
   }
   return f;
 }
