@@ -4,6 +4,7 @@
 
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -36,30 +37,43 @@ Eigen::VectorXd non_negative_least_squares(const Eigen::MatrixXd& a, const Eigen
   std::vector<bool> passive(static_cast<std::size_t>(n), false);  // the set P of Lawson–Hanson
   // Each outer step adds one index; each inner step removes at least one: 3n outer steps bound the work
   // in practice (L&H prove finite termination; the cap only guards against cycling by rounding).
+  // An index whose least-squares coefficient comes out ≤ 0 right after it entered P can only do so by
+  // rounding (its gradient w_t > 0 says it should grow); re-adding it would cycle forever, so it is
+  // skipped until x next changes (the safeguard of Lawson & Hanson §23.3, step 6, and of later codes).
+  std::vector<bool> skipped(static_cast<std::size_t>(n), false);
   for (int outer = 0; outer < 3 * static_cast<int>(n) + 10; ++outer) {
     const Eigen::VectorXd w = a.transpose() * (b - a * x);
     Eigen::Index t = -1;
     double best = tol;
     for (Eigen::Index j = 0; j < n; ++j)
-      if (!passive[static_cast<std::size_t>(j)] && w[j] > best) best = w[j], t = j;
-    if (t < 0) break;  // Kuhn–Tucker conditions hold
+      if (!passive[static_cast<std::size_t>(j)] && !skipped[static_cast<std::size_t>(j)] && w[j] > best) best = w[j], t = j;
+    if (t < 0) break;  // Kuhn–Tucker conditions hold (up to the skipped, rounding-level indices)
     passive[static_cast<std::size_t>(t)] = true;
+    if (solve_on(a, b, passive)[t] <= 0.0) {
+      passive[static_cast<std::size_t>(t)] = false;
+      skipped[static_cast<std::size_t>(t)] = true;
+      continue;
+    }
+    std::fill(skipped.begin(), skipped.end(), false);
     for (int inner = 0; inner < static_cast<int>(n) + 1; ++inner) {
       const Eigen::VectorXd z = solve_on(a, b, passive);
       double alpha = 1.0;
-      bool all_positive = true;
+      Eigen::Index limiting = -1;  // the index that stops the step: it leaves P, so every inner step shrinks P
       for (Eigen::Index j = 0; j < n; ++j)
         if (passive[static_cast<std::size_t>(j)] && z[j] <= 0.0) {
-          all_positive = false;
-          alpha = std::min(alpha, x[j] / (x[j] - z[j]));
+          const double step = x[j] / (x[j] - z[j]);
+          if (limiting < 0 || step < alpha) alpha = step, limiting = j;
         }
-      if (all_positive) {
+      if (limiting < 0) {
         x = z;
         break;
       }
       x += alpha * (z - x);
+      x[limiting] = 0.0;
+      // Coefficients driven to (rounding-level) zero by the step leave P too.
+      const double floor = 1e-14 * std::max(1.0, x.cwiseAbs().maxCoeff());
       for (Eigen::Index j = 0; j < n; ++j)
-        if (passive[static_cast<std::size_t>(j)] && x[j] <= 0.0) passive[static_cast<std::size_t>(j)] = false, x[j] = 0.0;
+        if (passive[static_cast<std::size_t>(j)] && x[j] <= floor) passive[static_cast<std::size_t>(j)] = false, x[j] = 0.0;
     }
   }
   return x;
