@@ -102,3 +102,25 @@ TEST_CASE("NNLS: equals brute-force enumeration of zero sets on 30 random proble
     CHECK((x.array() >= 0.0).all());
   }
 }
+
+TEST_CASE("LSI: degenerate constraint sets (each row repeated, with rounding-level copies) give the same optimum") {
+  // Dense frequency grids give many nearly parallel constraints: the degenerate case where a textbook NNLS
+  // can cycle. Each row appears three times (exactly, and scaled by 1 ± 1e-15); the optimum is unchanged.
+  Rng rng(23);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Index p = 3 + trial % 3, m = 4 + trial % 4, rows = p + 4;
+    const Eigen::MatrixXd e = random_matrix(rng, rows, p), g = random_matrix(rng, m, p);
+    const Eigen::VectorXd f = random_matrix(rng, rows, 1), x0 = random_matrix(rng, p, 1);
+    const Eigen::VectorXd h = g * x0 - 0.2 * Eigen::VectorXd::Ones(m);
+    int active = 0;
+    const Eigen::VectorXd ref = brute_force(e, f, g, h, active);
+    Eigen::MatrixXd g3(3 * m, p);
+    Eigen::VectorXd h3(3 * m);
+    g3 << g, g * (1.0 + 1e-15), g * (1.0 - 1e-15);
+    h3 << h, h * (1.0 + 1e-15), h * (1.0 - 1e-15);
+    const auto sol = least_squares_inequality(e, f, g3, h3);
+    REQUIRE(sol.feasible);
+    CAPTURE(trial);
+    CHECK((sol.x - ref).norm() <= 1e-8 * (1.0 + ref.norm()));
+  }
+}
