@@ -263,13 +263,22 @@ PassivityResult continuous_passivity(const Order& order, const double* theta) {
   return r;
 }
 
-PassivityResult discrete_passivity(const codegen::DiscreteModel& m) {
+PassivityResult discrete_passivity(const codegen::DiscreteModel& m, bool scan) {
   const StateSpace ss = bilinear_to_continuous(discrete_realisation(m));
   const double fs = m.fs_hz;
   // ω = tan(θ/2), θ = 2π f / fs  ⇔  f = fs atan(ω) / π.
   const auto hz = [fs](double w) { return w == kInf ? 0.5 * fs : fs * std::atan(w) / kPi; };
   const RealPartFn re = [&](double w) { return m.response(hz(w)).real(); };
-  PassivityResult r = hamiltonian_passivity(ss, re, std::tan(kPi * 1.0 / fs), std::tan(0.5 * kPi * (1.0 - 1e-7)));
+  const double lo = std::tan(kPi * 1.0 / fs), hi = std::tan(0.5 * kPi * (1.0 - 1e-7));
+  PassivityResult r;
+  if (scan) {
+    r = hamiltonian_passivity(ss, re, lo, hi);
+  } else {
+    r = decide(ss, re, model_scale(ss, re, lo, hi), std::sqrt(lo * hi));
+    r.min_re = ss.D, r.min_at = kInf;
+    for (const auto& b : r.bands)
+      if (b.min_re < r.min_re) r.min_re = b.min_re, r.min_at = b.at;
+  }
   for (auto& c : r.crossings) c = hz(c);
   for (auto& b : r.bands) b.lo = hz(b.lo), b.hi = hz(b.hi), b.at = hz(b.at);
   r.min_at = hz(r.min_at);

@@ -58,8 +58,9 @@ PassivityResult hamiltonian_passivity(const StateSpace& ss, const RealPartFn& re
 PassivityResult continuous_passivity(const Order& order, const double* theta);
 
 /// Emitted discrete filter H(e^{j2πf/fs}); frequencies in Hz, a band reaching Nyquist has hi = fs/2.
-/// Requires every |z| < 1.
-PassivityResult discrete_passivity(const codegen::DiscreteModel& model);
+/// Requires every |z| < 1. `scan_minimum` false skips the dense scan that only feeds min_re/min_at
+/// outside the negative bands (the decision and the bands are the same; for certifiers in a loop).
+PassivityResult discrete_passivity(const codegen::DiscreteModel& model, bool scan_minimum = true);
 
 /// Fast exact decision for the fitter: G∞ < 0 or Re G(0) < 0 reject at once, the term-wise sufficient
 /// conditions (G∞ ≥ 0, A_q ≥ 0, |C_s| β_s ≤ B_s α_s; physics.md §2.2) accept at once, the Hamiltonian
