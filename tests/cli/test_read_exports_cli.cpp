@@ -118,7 +118,10 @@ TEST_CASE("fit cli: goodness of fit per order in fit.json, the summary table and
   const double expected = 0.01 * std::sqrt(2.0) / std::sqrt(m.y.abs2().mean());
   CHECK(q1s1 == doctest::Approx(expected).epsilon(0.15));
   CHECK(q0s0 > 5.0 * expected);
-  CHECK(fit["warnings"].empty());  // the true order, noise only: no "fits poorly"
+  // The true order, noise only: no "fits poorly" (the noise does make Re y < 0 at 12 points, which is
+  // reported as a note on the data, not on the fit).
+  for (const auto& w : fit["warnings"]) CHECK(w.get<std::string>().find("fits poorly") == std::string::npos);
+  CHECK(fit["warnings"].dump().find("not passive at 12 of 200") != std::string::npos);
   const std::string report = read_text(dir + "/report.html");
   CHECK(report.find("rel. RMS residual") != std::string::npos);
   CHECK(report.find("max |Δα|") != std::string::npos);

@@ -1,5 +1,6 @@
 // The residue basis (model/residue_basis.hpp) against paper eq. 2 written term by term.
 #include "core/rng.hpp"
+#include "model/eq2_reference.hpp"
 #include "model/residue_basis.hpp"
 
 #include <doctest/doctest.h>
@@ -9,21 +10,6 @@
 #include <limits>
 
 using namespace admitgen;
-
-namespace {
-
-std::complex<double> eq2(const Order& o, const Eigen::VectorXd& th, double w) {
-  const std::complex<double> jw(0.0, w);
-  std::complex<double> g = th[0];
-  for (int q = 0; q < o.q(); ++q) g += th[Order::a(q)] / (th[Order::lambda(q)] + jw);
-  for (int s = 0; s < o.s(); ++s) {
-    const std::complex<double> big(th[o.b(s)], th[o.c(s)]), pole(th[o.alpha(s)], th[o.beta(s)]);
-    g += big / (pole + jw) + std::conj(big) / (std::conj(pole) + jw);
-  }
-  return g;
-}
-
-}  // namespace
 
 TEST_CASE("residue basis: basis times residues is eq. 2 for random orders and parameters") {
   Rng rng(20261123);
@@ -42,7 +28,7 @@ TEST_CASE("residue basis: basis times residues is eq. 2 for random orders and pa
       const Eigen::VectorXd r = residues_of(o, th);
       REQUIRE(r.size() == residue_count(o));
       for (Eigen::Index i = 0; i < w.size(); ++i) {
-        const std::complex<double> g = std::isinf(w[i]) ? std::complex<double>(th[0], 0.0) : eq2(o, th, w[i]);
+        const std::complex<double> g = std::isinf(w[i]) ? std::complex<double>(th[0], 0.0) : test::eq2_reference(o, th, w[i]);
         // Each of ≤ 1 + Q + 2S terms is exact to a few ulp of its own size; the sum is bounded by Σ|r_k φ_k|.
         double scale = 0.0;
         for (Eigen::Index k = 0; k < r.size(); ++k) scale += std::abs(r[k]) * std::hypot(b.re(i, k), b.im(i, k));
