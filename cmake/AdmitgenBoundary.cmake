@@ -2,13 +2,15 @@
 # admitgen_add_boundary(<target>
 #     FIT <fit.json> FS <hz> [<hz>...] FORMAT <f32|q31|q15>
 #     [NAME <c-identifier>] [ORDER <QxSy>] [ESTIMATE passive|mean|max_likelihood] [FIR_TAPS <n>]
-#     [BANDS_JSON <file>] [ALLOW_UNSAFE])
+#     [BANDS_JSON <file>] [ALLOW_UNSAFE] [NO_PASSIVITY_ENFORCEMENT])
 #
 # Runs `admitgen emit` at build time and creates an INTERFACE library <target> that provides the
 # generated header <NAME>.h (NAME defaults to <target>) and links the C99 runtime (admitgen::runtime).
 # The header is regenerated when the fit, the admitgen executable or the header template change.
 # Sets the target property ADMITGEN_HEADER to the header's path. emit refuses a filter that fails
 # `admitgen check` (the build then fails); ALLOW_UNSAFE passes --allow-unsafe (say why next to it).
+# NO_PASSIVITY_ENFORCEMENT passes --no-passivity-enforcement (emit the estimate exactly as fitted; for
+# demonstrations of what a non-passive wall does).
 #
 # Works in the admitgen build tree (targets admitgen / admitgen_rt) and from an installed package
 # (find_package(admitgen): imported targets admitgen::admitgen / admitgen::runtime).
@@ -20,7 +22,7 @@ endif()
 set(ADMITGEN_TEMPLATE_FILE "${ADMITGEN_TEMPLATE_FILE}" CACHE INTERNAL "admitgen header template")
 
 function(admitgen_add_boundary target)
-  cmake_parse_arguments(ARG "ALLOW_UNSAFE" "FIT;FORMAT;NAME;ORDER;ESTIMATE;FIR_TAPS;BANDS_JSON" "FS" ${ARGN})
+  cmake_parse_arguments(ARG "ALLOW_UNSAFE;NO_PASSIVITY_ENFORCEMENT" "FIT;FORMAT;NAME;ORDER;ESTIMATE;FIR_TAPS;BANDS_JSON" "FS" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "admitgen_add_boundary(${target}): unknown arguments ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -59,6 +61,9 @@ function(admitgen_add_boundary target)
   endif()
   if(ARG_FIR_TAPS)
     list(APPEND args --fir-taps ${ARG_FIR_TAPS})
+  endif()
+  if(ARG_NO_PASSIVITY_ENFORCEMENT)
+    list(APPEND args --no-passivity-enforcement)
   endif()
   if(ARG_ALLOW_UNSAFE)
     list(APPEND args --allow-unsafe)

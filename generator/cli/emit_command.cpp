@@ -53,6 +53,9 @@ void setup_emit_command(CLI::App& app, int& exit_code) {
   sub->add_option("--golden-seed", opt->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
   sub->add_option("--templates", opt->templates, "Directory holding admitgen_boundary.h.in (default: installed/source)");
   sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
+  sub->add_flag("--no-passivity-enforcement", opt->no_passivity_enforcement,
+                "Experts: emit the chosen estimate as fitted, with a plain least-squares refit (no passivity "
+                "enforcement); a non-passive result is then refused unless --allow-unsafe is given too");
   sub->add_flag("--allow-unsafe", opt->allow_unsafe,
                 "Write the header even when it fails admitgen check (non-causal, unstable, non-passive, overflow, "
                 "limit cycle); each failure is printed as a warning");
@@ -67,6 +70,7 @@ int run_emit_command(const EmitOptions& o) {
   s.order = o.order;
   s.estimate = parse_estimate(o.estimate);
   s.fir_taps = o.fir_taps;
+  s.enforce_passivity = !o.no_passivity_enforcement;
   if (!o.golden.empty() && s.format == codegen::Format::f32)
     throw InputError("--golden needs --format q31 or q15 (f32 output is not bit-exact across compilers)");
   const std::string tpl = codegen::load_template(o.templates, "admitgen_boundary.h.in");

@@ -26,6 +26,7 @@ struct EmitOptions {
   std::uint64_t golden_seed = 1;
   std::string templates;
   bool quiet = false;
+  bool no_passivity_enforcement = false;  ///< emit the estimate as fitted, plain least-squares refit
   bool allow_unsafe = false;  ///< write the header even if `admitgen check` would fail it (warns per failure)
 };
 

@@ -32,6 +32,8 @@ struct EmitSettings {
   /// Passivity certifier and margin of the discrete refit at each rate (see DiscretiseOptions; the emit
   /// pipeline, emit/emit.hpp, passes the discrete Hamiltonian test).
   std::function<std::vector<double>(const DiscreteModel&)> passivity_violations;
+  /// false: the emit pipeline neither repairs a non-passive estimate nor constrains the refit (experts).
+  bool enforce_passivity = true;
   double passive_margin = 1e-9;
 };
 
