@@ -59,7 +59,12 @@ Json settings_json(const FitSettings& s, std::size_t n_points) {
                            {"dlogz", s.sampler.dlogz},
                            {"max_iterations", s.sampler.max_iterations},
                            {"missed_mode_retries", s.missed_mode_retries},
-                           {"slices", s.sampler.slices > 0 ? Json(s.sampler.slices) : Json("3 + dim")}}}};
+                           {"slices", s.sampler.slices > 0 ? Json(s.sampler.slices) : Json("3 + dim")},
+                           {"residues", s.sampler_kind == SamplerKind::poles
+                                            ? "integrated analytically (poles sampled, box correction; full sampler "
+                                              "where the correction is not accurate to the tolerance)"
+                                            : "sampled"},
+                           {"truncation_tolerance_nats", s.truncation_tolerance}}}};
   if (s.passive) j["passive"] = "prior truncated to passive models (Hamiltonian test); evidence under the renormalised prior";
   return j;
 }
@@ -79,6 +84,14 @@ Json model_json(const ModelResult& m) {
               {"seconds", m.seconds},
               {"parameters", to_json(m.parameters)}};
   if (m.run.log_support_fraction != 0.0) j["log_passive_prior_fraction"] = m.run.log_support_fraction;
+  j["sampler"] = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
+  if (!m.sampler_note.empty()) j["sampler_note"] = m.sampler_note;
+  if (m.sampler != "full") {
+    j["truncation_correction_nats"] = m.truncation_correction;
+    j["truncation_correction_error_nats"] = m.truncation_correction_error;
+    j["reweighted_ess_ratio"] = m.reweighted_ess_ratio;
+    j["residue_draws_gibbs_weight"] = m.gibbs_weight;
+  }
   return j;
 }
 
