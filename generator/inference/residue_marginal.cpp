@@ -19,7 +19,8 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
       omega_(data.omega()),
       omega2_(omega_.square()),
       k_(real_data_count(count, data.size())),
-      p_(residue_count(order)) {
+      p_(residue_count(order)),
+      tail_(k_ - p_) {
   ADMITGEN_ENSURE(k_ > p_, "K = {} real data for {} residues", k_, p_);
   const Eigen::Index n = omega_.size();
   b_.resize(2 * n);
@@ -29,7 +30,6 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
   const double nu = k_ - p_;
   constant_ = std::lgamma(0.5 * nu) - std::log(2.0) - 0.5 * nu * std::log(EIGEN_PI) -
               log_residue_box_volume(order, ranges);
-  z_negligible_ = student_t_negligible_tail(nu);
   residue_box(order, ranges, lo_, hi_);
   a_.resize(2 * n, p_);
   g_.resize(p_);
@@ -56,8 +56,11 @@ void ResidueMarginal::fill_basis(const double* poles, Eigen::MatrixXd& a) const 
   }
   for (int s = 0; s < order_.s(); ++s, k += 2) {
     const double al = poles[order_.q() + 2 * s], be = poles[order_.q() + 2 * s + 1];
-    dp_ = (al * al + (omega_ + be).square()).inverse();  // 1/d+
-    dm_ = (al * al + (omega_ - be).square()).inverse();  // 1/d−
+    // One division per pair (as model/multipole.hpp): 1/d+ = d−/(d+ d−), 1/d− = d+/(d+ d−).
+    const Eigen::ArrayXd d_plus = al * al + (omega_ + be).square(), d_minus = al * al + (omega_ - be).square();
+    inv_ = (d_plus * d_minus).inverse();
+    dp_ = d_minus * inv_;  // 1/d+
+    dm_ = d_plus * inv_;   // 1/d−
     a.col(k).head(n) = (al * (dp_ + dm_)).matrix();
     a.col(k).tail(n) = (-((omega_ + be) * dp_ + (omega_ - be) * dm_)).matrix();
     a.col(k + 1).head(n) = ((omega_ + be) * dp_ - (omega_ - be) * dm_).matrix();
@@ -95,7 +98,7 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
 
   // Coordinate marginals: t_ν with scale s_k = √(S_min/ν · (M⁻¹)_kk), (M⁻¹)_kk = D_k² Σ_i (L̃⁻¹)_ik².
   inv_chol_ = llt.matrixL().solve(Eigen::MatrixXd::Identity(p_, p_));
-  const auto tail = [&](double z) { return z < z_negligible_ ? student_t_upper_tail(c.nu, z) : 0.0; };
+  const auto tail = [&](double z) { return tail_.upper(z); };
   double sum_outside = 0.0, min_inside = 1.0;
   for (Eigen::Index k = 0; k < p_; ++k) {
     const double s = c.scale[k] * inv_chol_.col(k).norm() * std::sqrt(c.s_min / c.nu);

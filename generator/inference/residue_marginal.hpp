@@ -18,6 +18,7 @@
 #include "data/measurement.hpp"
 #include "inference/likelihood.hpp"
 #include "inference/priors.hpp"
+#include "inference/student_t.hpp"
 #include "model/order.hpp"
 
 #include <Eigen/Cholesky>
@@ -63,8 +64,8 @@ class ResidueMarginal {
   Eigen::VectorXd b_;
   double b_norm2_;
   int k_, p_;
+  StudentTail tail_;  ///< t_ν tails, ν = K − p
   double constant_;    ///< ln Γ(ν/2) − ln 2 − (ν/2) ln π − ln V_r
-  double z_negligible_;  ///< standardised distance beyond which a t tail is below 1e-16
   Eigen::VectorXd lo_, hi_;
   mutable Eigen::MatrixXd a_, inv_chol_, scaled_;
   mutable Eigen::VectorXd g_;

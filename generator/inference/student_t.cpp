@@ -42,6 +42,30 @@ double student_t_negligible_tail(double nu) {
   return boost::math::quantile(boost::math::complement(StudentT(nu), 1e-16));
 }
 
+StudentTail::StudentTail(double nu) : nu_(nu), z_neg_(student_t_negligible_tail(nu)) {
+  if (z_neg_ > 64.0) return;
+  const StudentT t(nu);
+  const int nodes = static_cast<int>(std::ceil(z_neg_ / step_)) + 2;
+  for (int i = 0; i < nodes; ++i) {
+    const double z = i * step_;
+    const double q = boost::math::cdf(boost::math::complement(t, z));
+    log_q_.push_back(std::log(q));
+    slope_.push_back(-boost::math::pdf(t, z) / q);
+  }
+}
+
+double StudentTail::upper(double z) const {
+  if (z >= z_neg_) return 0.0;
+  if (log_q_.empty()) return student_t_upper_tail(nu_, z);
+  const double x = z / step_;
+  const auto i = static_cast<std::size_t>(x);
+  const double u = x - static_cast<double>(i);
+  // Cubic Hermite basis on [z_i, z_i+1] with slopes scaled by the step.
+  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
+  const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+  return std::exp(h00 * log_q_[i] + h10 * step_ * slope_[i] + h01 * log_q_[i + 1] + h11 * step_ * slope_[i + 1]);
+}
+
 double chi_square_draw(double nu, Rng& rng) { return 2.0 * gamma_draw(0.5 * nu, rng); }
 
 double truncated_student_t_draw(double nu, double a, double b, Rng& rng) {
