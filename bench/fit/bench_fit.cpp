@@ -4,7 +4,8 @@
 ///     with a plain std::complex loop over the same model as the baseline ratio;
 ///  2. for each order of the Q0-3 × S0-3 grid on the reference file: likelihood calls, wall seconds,
 ///     ln Z ± error;
-///  3. the whole grid's wall time with 1 and 2 threads.
+///  3. the whole grid's wall time with 1 and 2 threads;
+///  2-3 for each sampler in turn (full, then poles), plus Q1S1 alone, so the two print side by side.
 /// Usage: bench_fit [DATA.csv] [--quick]  (--quick skips the 1-thread grid)
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
@@ -80,20 +81,27 @@ void likelihood_throughput(const Measurement& data) {
   }
 }
 
-double grid(const Measurement& data, int threads, bool print_models) {
+double grid(const Measurement& data, int threads, bool print_models, SamplerKind kind = SamplerKind::full,
+            int qmax = 3, int smax = 3) {
   FitSettings s;
   s.threads = threads;
+  s.sampler_kind = kind;
+  s.qmax = qmax;
+  s.smax = smax;
   Progress quiet(false);
   const auto t0 = Clock::now();
   const FitResult fit = run_fit(data, s, quiet);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   if (print_models) {
-    fmt::print("{:<6} {:>12} {:>12} {:>7} {:>10} {:>10}\n", "order", "calls", "ln Z", "± err", "seconds", "calls/iter");
+    fmt::print("{:<6} {:>12} {:>12} {:>7} {:>10} {:>10} {:>10} {:>6}\n", "order", "calls", "ln Z", "± err", "seconds",
+               "calls/iter", "ns/call", "used");
     long total = 0;
     for (const auto& m : fit.models) {
       total += m.run.calls;
-      fmt::print("{:<6} {:>12} {:>12.2f} {:>7.2f} {:>10.2f} {:>10.1f}\n", m.order.name(), m.run.calls, m.run.log_z,
-                 m.run.log_z_error, m.seconds, static_cast<double>(m.run.calls) / static_cast<double>(m.run.iterations));
+      fmt::print("{:<6} {:>12} {:>12.2f} {:>7.2f} {:>10.2f} {:>10.1f} {:>10.0f} {:>6}\n", m.order.name(), m.run.calls,
+                 m.run.log_z, m.run.log_z_error, m.seconds,
+                 static_cast<double>(m.run.calls) / std::max(1.0, static_cast<double>(m.run.iterations)),
+                 m.seconds * 1e9 / static_cast<double>(m.run.calls), m.sampler == "full" ? "full" : "poles");
     }
     fmt::print("total likelihood calls: {}\n", total);
   }
@@ -111,12 +119,23 @@ int main(int argc, char** argv) {
   }
   const Measurement data = read_measurement(path, ReadOptions{});
   likelihood_throughput(data);
-  fmt::print("\n## Q0-3 x S0-3 grid on {} (500 live points, Table 1 priors, seed 1)\n", path);
-  const double two = grid(data, 2, true);
-  fmt::print("grid wall time, 2 threads: {:.2f} s\n", two);
-  if (!quick) {
-    const double one = grid(data, 1, false);
-    fmt::print("grid wall time, 1 thread:  {:.2f} s  (speed-up {:.2f}x)\n", one, one / two);
+  // Each sampler in turn, in one run (figures side by side; "used" says which sampler ran per order).
+  for (const SamplerKind kind : {SamplerKind::full, SamplerKind::poles}) {
+    const char* name = kind == SamplerKind::full ? "full" : "poles";
+    fmt::print("\n## Q1S1 alone, sampler {} (500 live points)\n", name);
+    const auto t0 = Clock::now();
+    FitSettings s;
+    s.sampler_kind = kind;
+    const ModelResult m = fit_order(data, Order(1, 1), s);
+    fmt::print("Q1S1: {:.2f} s, {} calls, ln Z {:.2f} ± {:.2f}\n",
+               std::chrono::duration<double>(Clock::now() - t0).count(), m.run.calls, m.run.log_z, m.run.log_z_error);
+    fmt::print("\n## Q0-3 x S0-3 grid on {}, sampler {} (500 live points, Table 1 priors, seed 1)\n", path, name);
+    const double two = grid(data, 2, true, kind);
+    fmt::print("grid wall time, sampler {}, 2 threads: {:.2f} s\n", name, two);
+    if (!quick) {
+      const double one = grid(data, 1, false, kind);
+      fmt::print("grid wall time, sampler {}, 1 thread:  {:.2f} s  (speed-up {:.2f}x)\n", name, one, one / two);
+    }
   }
   return 0;
 }

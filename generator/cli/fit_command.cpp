@@ -87,8 +87,9 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
                 "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
                 "truncated to passive models");
   sub->add_option("--sampler", opt->sampler,
-                  "poles: sample the poles, integrate the residues analytically (falls back to full per order where "
-                  "the residue prior box matters; fit.json says which ran); full: sample every parameter")
+                  "full: sample every parameter; poles (experimental): sample the poles, integrate the residues "
+                  "analytically (falls back to full per order where the residue box cannot be corrected for; "
+                  "fit.json says which ran)")
       ->check(CLI::IsMember({"poles", "full"}))->capture_default_str();
   sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
   sub->callback([opt, &exit_code] { exit_code = run_fit_command(*opt); });

@@ -24,7 +24,7 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 SamplerKind parse_sampler_kind(const std::string& text) {
   if (text == "poles") return SamplerKind::poles;
   if (text == "full") return SamplerKind::full;
-  throw InputError(fmt::format("--sampler '{}': expected poles (default) or full", text));
+  throw InputError(fmt::format("--sampler '{}': expected full (default) or poles", text));
 }
 
 namespace {
