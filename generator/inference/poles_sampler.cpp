@@ -55,6 +55,19 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   std::vector<double> best_theta;
   Eigen::ArrayXd rho = Eigen::ArrayXd::Ones(weight.size());
   double correction_variance = 0.0;  // Σ p_i² Var(ρ_i)
+  // First pass: which points need the box estimate, and their share a_i = p_i/√P_up of the draw budget
+  // (minimising Σ p_i² Var(ρ_i) ≤ Σ p_i²/(m_i P_up) under Σ m_i = budget gives m_i ∝ p_i/√P_up).
+  std::vector<double> share(poles.size(), 0.0);
+  double share_sum = 0.0, corrected = 0.0;
+  for (std::size_t i = 0; i < poles.size(); ++i) {
+    const ResidueConditional& c = marginal.conditional(dim == 0 ? nullptr : poles.point(i));
+    if (c.valid && -std::expm1(c.log_p_lo - c.log_p_up) > 1e-9) {
+      share[i] = weight[static_cast<Eigen::Index>(i)] * std::exp(-0.5 * c.log_p_up);
+      share_sum += share[i];
+      corrected += 1.0;
+    }
+  }
+  const double budget = std::min(kBoxDrawBudget, kBoxDrawsPerPoint * corrected);
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const Eigen::Index ii = static_cast<Eigen::Index>(i);
     const double* psi = dim == 0 ? nullptr : poles.point(i);
@@ -71,11 +84,11 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
       r = draw_residues(c, lo, hi, rng, method);
       if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];
     } else {
-      // P̂ = h/m; the first draw inside the box is an exact draw of the truncated t. Var(ρ) ≤ 1/(m P_up)
-      // (P(1 − P) ≤ P ≤ P_up), so m ≥ p_i/(P_up ε²) keeps Σ p_i² Var(ρ_i) ≤ ε² Σ p_i = ε².
+      // P̂ = h/m (unbiased for any m ≥ 1); the first draw inside the box is an exact draw of the
+      // truncated t. m_i from the budget shares above, at most kMaxBoxDraws.
       const double p_up = std::exp(c.log_p_up);
-      const double wanted = weight[ii] / (p_up * kBoxRelativeError * kBoxRelativeError);
-      const long m = std::clamp(static_cast<long>(std::ceil(std::min(wanted, 1e9))), long{kBoxDraws}, kMaxBoxDraws);
+      const double wanted = share_sum > 0.0 ? budget * share[i] / share_sum : 1.0;
+      const long m = std::clamp(static_cast<long>(std::ceil(std::min(wanted, 1e12))), 1L, kMaxBoxDraws);
       long hits = 0;
       for (long d = 0; d < m; ++d) {
         Eigen::VectorXd x = untruncated_residue_draw(c, rng);

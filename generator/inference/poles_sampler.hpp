@@ -23,7 +23,7 @@ struct PolesRun {
   NestedRun run;
   /// Box correction (docs/method.md, "Truncation by the residue box"). The sampled likelihood uses P_up
   /// for the box mass P_box; every point whose bounds differ (1 − P_lo/P_up > 1e-9) gets the unbiased
-  /// estimate P̂ = h/m from m ≥ kBoxDraws untruncated draws (h inside the box), and its weight is
+  /// estimate P̂ = h/m from m untruncated draws (see kBoxDrawBudget) (h inside the box), and its weight is
   /// multiplied by ρ = P̂/P_up. ln Z gains ln Σ p_i ρ_i (this field), with the Monte Carlo error below
   /// (added in quadrature to run.log_z_error); elsewhere ρ = 1 exactly (to 1e-9).
   double truncation_correction = 0.0;
@@ -41,11 +41,12 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
                            bool reduce_symmetry, DataCount count, const NestedSettings& settings,
                            std::uint64_t draw_seed, const NestedProgressFn& progress = {});
 
-/// Untruncated draws per point for the box-mass estimate P̂: at least kBoxDraws, more where the point's
-/// weight asks for it so that the correction's relative error stays below kBoxRelativeError (up to
-/// kMaxBoxDraws per point; the reported error says what was reached).
-constexpr long kBoxDraws = 100;
+/// Untruncated draws for the box-mass estimates P̂ of one run: kBoxDrawsPerPoint per point that needs
+/// one, at most kBoxDrawBudget in all, shared over the
+/// points in proportion to p_i/√P_up,i (the allocation minimising the correction's variance bound), at
+/// least 1 and at most kMaxBoxDraws per point. The reported correction error says what was reached.
+constexpr double kBoxDrawBudget = 2e6;
+constexpr double kBoxDrawsPerPoint = 50.0;
 constexpr long kMaxBoxDraws = 200000;
-constexpr double kBoxRelativeError = 0.01;
 
 }  // namespace admitgen
