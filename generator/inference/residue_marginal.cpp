@@ -99,12 +99,9 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   // Coordinate marginals: t_ν with scale s_k = √(S_min/ν · (M⁻¹)_kk), (M⁻¹)_kk = D_k² Σ_i (L̃⁻¹)_ik².
   inv_chol_ = llt.matrixL().solve(Eigen::MatrixXd::Identity(p_, p_));
   const auto tail = [&](double z) { return tail_.upper(z); };
-  double sum_outside = 0.0, min_inside = 1.0;
-  for (Eigen::Index k = 0; k < p_; ++k) {
-    const double s = c.scale[k] * inv_chol_.col(k).norm() * std::sqrt(c.s_min / c.nu);
-    const double z_lo = (c.mean[k] - lo_[k]) / s, z_hi = (hi_[k] - c.mean[k]) / s;
-    // P_k = P(−z_lo ≤ T ≤ z_hi), from upper tails only (no cancellation against 1 when r̂_k lies outside).
-    double inside, outside;
+  // P(−z_lo ≤ T ≤ z_hi) and its complement, from upper tails only (no cancellation against 1 when the
+  // centre lies outside the interval).
+  const auto interval = [&](double z_lo, double z_hi, double& inside, double& outside) {
     if (z_lo < 0.0) {
       inside = tail(-z_lo) - tail(z_hi);
       outside = 1.0 - inside;
@@ -115,8 +112,43 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
       outside = tail(z_lo) + tail(z_hi);
       inside = 1.0 - outside;
     }
+  };
+  double sum_outside = 0.0, min_inside = 1.0;
+  for (Eigen::Index k = 0; k < p_; ++k) {
+    const double s = c.scale[k] * inv_chol_.col(k).norm() * std::sqrt(c.s_min / c.nu);
+    double inside, outside;
+    interval((c.mean[k] - lo_[k]) / s, (hi_[k] - c.mean[k]) / s, inside, outside);
     sum_outside += outside;
     min_inside = std::min(min_inside, inside);
+  }
+  // One more upper bound, along the direction v in which the t is widest relative to the box (power
+  // iteration on W⁻¹M⁻¹W⁻¹, W = diag(box widths)): P_box ≤ P(vᵀr ∈ vᵀ·box), where vᵀ·box is the interval
+  // [Σ min(v_k lo_k, v_k hi_k), Σ max(…)] and vᵀr is a univariate t of scale √(S_min/ν · vᵀM⁻¹v). Any v
+  // gives a valid bound; this one is tight where residues are nearly degenerate (coinciding poles).
+  if (p_ > 1) {
+    const Eigen::VectorXd width = hi_ - lo_;
+    const auto m_inv = [&](const Eigen::VectorXd& x) {  // M⁻¹x = D L̃⁻ᵀ L̃⁻¹ D x
+      return Eigen::VectorXd(c.scale.cwiseProduct(inv_chol_.transpose() * (inv_chol_ * c.scale.cwiseProduct(x))));
+    };
+    Eigen::VectorXd u = Eigen::VectorXd::Ones(p_);
+    for (int it = 0; it < 8; ++it) {
+      u = m_inv(u.cwiseQuotient(width)).cwiseQuotient(width);  // W⁻¹M⁻¹W⁻¹u: covariance in box units
+      u /= u.norm();
+    }
+    // u is the direction in box units x = W⁻¹(r − lo); the functional uᵀx is vᵀr + const with v = W⁻¹u.
+    const Eigen::VectorXd v = u.cwiseQuotient(width);
+    const double var = v.dot(m_inv(v)) * c.s_min / c.nu;
+    double lo_v = 0.0, hi_v = 0.0;
+    for (Eigen::Index k = 0; k < p_; ++k) {
+      lo_v += std::min(v[k] * lo_[k], v[k] * hi_[k]);
+      hi_v += std::max(v[k] * lo_[k], v[k] * hi_[k]);
+    }
+    if (var > 0.0 && std::isfinite(var)) {
+      const double s = std::sqrt(var), centre = v.dot(c.mean);
+      double inside, outside;
+      interval((centre - lo_v) / s, (hi_v - centre) / s, inside, outside);
+      min_inside = std::min(min_inside, inside);
+    }
   }
   // P_up is floored at 1e-300 (keeps ln L finite where the t lies far outside the box); a floor only
   // raises the upper bound, and such points have P_lo = 0, so they count fully in the truncation check.
