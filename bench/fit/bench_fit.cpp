@@ -4,11 +4,14 @@
 ///     with a plain std::complex loop over the same model as the baseline ratio;
 ///  2. for each order of the Q0-3 × S0-3 grid on the reference file: likelihood calls, wall seconds,
 ///     ln Z ± error;
-///  3. the whole grid's wall time with 1 and 2 threads.
+///  3. the whole grid's wall time with 1 and 2 threads;
+///  2-3 for each sampler in turn (full, then poles), plus Q1S1 alone, so the two print side by side.
 /// Usage: bench_fit [DATA.csv] [--quick]  (--quick skips the 1-thread grid)
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/likelihood.hpp"
+#include "inference/pole_space.hpp"
+#include "inference/residue_marginal.hpp"
 #include "inference/priors.hpp"
 #include "selection/fit.hpp"
 
@@ -42,8 +45,8 @@ double naive_sum_squares(const Order& o, const double* th, const Measurement& m)
 
 void likelihood_throughput(const Measurement& data) {
   fmt::print("## Likelihood throughput ({} points)\n", data.size());
-  fmt::print("{:<6} {:>6} {:>14} {:>12} {:>16} {:>14}\n", "order", "terms", "calls/s", "ns/call", "ns/(point*term)",
-             "vs std::complex");
+  fmt::print("{:<6} {:>6} {:>14} {:>12} {:>16} {:>14} {:>16}\n", "order", "terms", "calls/s", "ns/call", "ns/(point*term)",
+             "vs std::complex", "marginal ns/call");
   Rng rng(7);
   for (const Order o : {Order(0, 1), Order(1, 1), Order(2, 2), Order(3, 3)}) {
     const PriorTransform t(o, PriorRanges::table1(), true);
@@ -63,25 +66,42 @@ void likelihood_throughput(const Measurement& data) {
     t0 = Clock::now();
     for (long r = 0; r < reps / 4; ++r) sink += naive_sum_squares(o, thetas.data() + (r % kSets) * o.dim(), data);
     const double naive = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(reps / 4);
-    fmt::print("{:<6} {:>6} {:>14.3g} {:>12.1f} {:>16.3f} {:>13.2f}x{}\n", o.name(), terms, 1.0 / fast, fast * 1e9,
-               fast * 1e9 / (static_cast<double>(data.size()) * terms), naive / fast, sink == 0.123 ? "!" : "");
+    // The residue-marginal likelihood of the pole sampler at the same poles.
+    const ResidueMarginal marginal(data, o, DataCount::two_per_point, PriorRanges::table1());
+    const auto poles_of = pole_indices(o);
+    std::vector<double> poles(static_cast<std::size_t>(kSets) * poles_of.size() + 1);
+    for (int k = 0; k < kSets; ++k)
+      for (std::size_t j = 0; j < poles_of.size(); ++j)
+        poles[static_cast<std::size_t>(k) * poles_of.size() + j] = thetas[static_cast<std::size_t>(k * o.dim() + poles_of[j])];
+    t0 = Clock::now();
+    for (long r = 0; r < reps; ++r) sink += marginal(poles.data() + static_cast<std::size_t>(r % kSets) * poles_of.size());
+    const double marg = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(reps);
+    fmt::print("{:<6} {:>6} {:>14.3g} {:>12.1f} {:>16.3f} {:>13.2f}x {:>16.1f}{}\n", o.name(), terms, 1.0 / fast, fast * 1e9,
+               fast * 1e9 / (static_cast<double>(data.size()) * terms), naive / fast, marg * 1e9, sink == 0.123 ? "!" : "");
   }
 }
 
-double grid(const Measurement& data, int threads, bool print_models) {
+double grid(const Measurement& data, int threads, bool print_models, SamplerKind kind = SamplerKind::full,
+            int qmax = 3, int smax = 3) {
   FitSettings s;
   s.threads = threads;
+  s.sampler_kind = kind;
+  s.qmax = qmax;
+  s.smax = smax;
   Progress quiet(false);
   const auto t0 = Clock::now();
   const FitResult fit = run_fit(data, s, quiet);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   if (print_models) {
-    fmt::print("{:<6} {:>12} {:>12} {:>7} {:>10} {:>10}\n", "order", "calls", "ln Z", "± err", "seconds", "calls/iter");
+    fmt::print("{:<6} {:>12} {:>12} {:>7} {:>10} {:>10} {:>10} {:>6}\n", "order", "calls", "ln Z", "± err", "seconds",
+               "calls/iter", "ns/call", "used");
     long total = 0;
     for (const auto& m : fit.models) {
       total += m.run.calls;
-      fmt::print("{:<6} {:>12} {:>12.2f} {:>7.2f} {:>10.2f} {:>10.1f}\n", m.order.name(), m.run.calls, m.run.log_z,
-                 m.run.log_z_error, m.seconds, static_cast<double>(m.run.calls) / static_cast<double>(m.run.iterations));
+      fmt::print("{:<6} {:>12} {:>12.2f} {:>7.2f} {:>10.2f} {:>10.1f} {:>10.0f} {:>6}\n", m.order.name(), m.run.calls,
+                 m.run.log_z, m.run.log_z_error, m.seconds,
+                 static_cast<double>(m.run.calls) / std::max(1.0, static_cast<double>(m.run.iterations)),
+                 m.seconds * 1e9 / static_cast<double>(m.run.calls), m.sampler == "full" ? "full" : "poles");
     }
     fmt::print("total likelihood calls: {}\n", total);
   }
@@ -99,12 +119,23 @@ int main(int argc, char** argv) {
   }
   const Measurement data = read_measurement(path, ReadOptions{});
   likelihood_throughput(data);
-  fmt::print("\n## Q0-3 x S0-3 grid on {} (500 live points, Table 1 priors, seed 1)\n", path);
-  const double two = grid(data, 2, true);
-  fmt::print("grid wall time, 2 threads: {:.2f} s\n", two);
-  if (!quick) {
-    const double one = grid(data, 1, false);
-    fmt::print("grid wall time, 1 thread:  {:.2f} s  (speed-up {:.2f}x)\n", one, one / two);
+  // Each sampler in turn, in one run (figures side by side; "used" says which sampler ran per order).
+  for (const SamplerKind kind : {SamplerKind::full, SamplerKind::poles}) {
+    const char* name = kind == SamplerKind::full ? "full" : "poles";
+    fmt::print("\n## Q1S1 alone, sampler {} (500 live points)\n", name);
+    const auto t0 = Clock::now();
+    FitSettings s;
+    s.sampler_kind = kind;
+    const ModelResult m = fit_order(data, Order(1, 1), s);
+    fmt::print("Q1S1: {:.2f} s, {} calls, ln Z {:.2f} ± {:.2f}\n",
+               std::chrono::duration<double>(Clock::now() - t0).count(), m.run.calls, m.run.log_z, m.run.log_z_error);
+    fmt::print("\n## Q0-3 x S0-3 grid on {}, sampler {} (500 live points, Table 1 priors, seed 1)\n", path, name);
+    const double two = grid(data, 2, true, kind);
+    fmt::print("grid wall time, sampler {}, 2 threads: {:.2f} s\n", name, two);
+    if (!quick) {
+      const double one = grid(data, 1, false, kind);
+      fmt::print("grid wall time, sampler {}, 1 thread:  {:.2f} s  (speed-up {:.2f}x)\n", name, one, one / two);
+    }
   }
   return 0;
 }

@@ -34,6 +34,7 @@ FitSettings to_settings(const FitOptions& o) {
   s.data_count = parse_data_count(o.likelihood_k);
   s.reduce_symmetry = !o.no_symmetry_reduction;
   s.passive = o.passive;
+  s.sampler_kind = parse_sampler_kind(o.sampler);
   if (!o.priors.empty()) {
     s.priors = PriorRanges::from_file(o.priors);
     s.priors_origin = o.priors;
@@ -120,6 +121,11 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--passive", opt->passive,
                 "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
                 "truncated to passive models");
+  sub->add_option("--sampler", opt->sampler,
+                  "full: sample every parameter; poles (experimental): sample the poles, integrate the residues "
+                  "analytically (falls back to full per order where the residue box cannot be corrected for; "
+                  "fit.json says which ran)")
+      ->check(CLI::IsMember({"poles", "full"}))->capture_default_str();
   sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
   sub->callback([opt, &exit_code] { exit_code = run_fit_command(*opt); });
 }

@@ -30,6 +30,7 @@ struct FitOptions {
   int missed_mode_retries = 2;
   bool no_symmetry_reduction = false;
   bool passive = false;
+  std::string sampler = "full";  ///< full | poles (residues integrated analytically)
   bool quiet = false;
 };
 

@@ -25,14 +25,17 @@ double weighted_quantile(const Eigen::ArrayXd& values, const Eigen::ArrayXd& wei
   std::stable_sort(idx.begin(), idx.end(), [&](auto a, auto b) { return values[a] < values[b]; });
   const double total = weights.sum();
   double cumulative = 0.0, prev_mid = 0.0, prev_value = values[idx.front()];
+  bool first = true;
   for (std::size_t k = 0; k < idx.size(); ++k) {
     const double w = weights[idx[k]] / total;
+    if (w == 0.0 && k + 1 < idx.size()) continue;  // a zero-weight point stands for no posterior mass
     const double mid = cumulative + 0.5 * w;  // the cumulative weight this value stands for
     if (mid >= q) {
-      if (k == 0 || mid == prev_mid) return values[idx[k]];
+      if (first || mid == prev_mid) return values[idx[k]];
       const double t = (q - prev_mid) / (mid - prev_mid);
       return prev_value + t * (values[idx[k]] - prev_value);
     }
+    first = false;
     cumulative += w;
     prev_mid = mid;
     prev_value = values[idx[k]];
@@ -70,9 +73,12 @@ std::vector<std::size_t> resample_indices(const Eigen::ArrayXd& weights, std::si
   std::size_t i = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const double target = (static_cast<double>(k) + offset) / static_cast<double>(count);
-    while (cumulative < target && i + 1 < static_cast<std::size_t>(weights.size()))
+    while ((cumulative < target || weights[static_cast<Eigen::Index>(i)] == 0.0) &&
+           i + 1 < static_cast<std::size_t>(weights.size()))
       cumulative += weights[static_cast<Eigen::Index>(++i)] / total;
-    idx.push_back(i);
+    std::size_t pick = i;  // rounding can run onto trailing zero-weight points: step back off them
+    while (weights[static_cast<Eigen::Index>(pick)] == 0.0 && pick > 0) --pick;
+    idx.push_back(pick);
   }
   return idx;
 }

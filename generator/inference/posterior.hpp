@@ -28,13 +28,15 @@ Eigen::ArrayXd posterior_weights(const NestedRun& run);
 /// Kish effective sample size (Σp)²/Σp².
 double effective_sample_size(const Eigen::ArrayXd& weights);
 
-/// Weighted quantile q ∈ [0,1] of values (linear in the cumulative weight at the midpoints).
+/// Weighted quantile q ∈ [0,1] of values (linear in the cumulative weight at the midpoints); points of
+/// zero weight are skipped.
 double weighted_quantile(const Eigen::ArrayXd& values, const Eigen::ArrayXd& weights, double q);
 
 /// Summary of each parameter; `names` has run.dim entries.
 std::vector<ParameterSummary> summarize(const NestedRun& run, const std::vector<std::string>& names);
 
 /// Indices of `count` equal-weight draws by systematic resampling (Kitagawa 1996): one uniform offset.
+/// Never returns a point of zero weight.
 std::vector<std::size_t> resample_indices(const Eigen::ArrayXd& weights, std::size_t count, Rng& rng);
 
 /// Index of the highest-likelihood point.

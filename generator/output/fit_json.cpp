@@ -52,7 +52,12 @@ Json settings_json(const FitSettings& s, std::size_t n_points) {
                            {"dlogz", s.sampler.dlogz},
                            {"max_iterations", s.sampler.max_iterations},
                            {"missed_mode_retries", s.missed_mode_retries},
-                           {"slices", s.sampler.slices > 0 ? Json(s.sampler.slices) : Json("3 + dim")}}}};
+                           {"slices", s.sampler.slices > 0 ? Json(s.sampler.slices) : Json("3 + dim")},
+                           {"residues", s.sampler_kind == SamplerKind::poles
+                                            ? "integrated analytically (poles sampled, box correction; full sampler "
+                                              "where the correction is not accurate to the tolerance)"
+                                            : "sampled"},
+                           {"truncation_tolerance_nats", s.truncation_tolerance}}}};
   if (s.passive) j["passive"] = "prior truncated to passive models (Hamiltonian test); evidence under the renormalised prior";
   return j;
 }
@@ -97,6 +102,14 @@ Json model_json(const ModelResult& m, const Measurement& data) {
   j["goodness_of_fit"] = {{"estimate", "max_likelihood"},
                           {"relative_rms_residual", g.relative_rms},
                           {"max_abs_delta_alpha", g.max_abs_delta_alpha}};
+  j["sampler"] = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
+  if (!m.sampler_note.empty()) j["sampler_note"] = m.sampler_note;
+  if (m.sampler != "full") {
+    j["truncation_correction_nats"] = m.truncation_correction;
+    j["truncation_correction_error_nats"] = m.truncation_correction_error;
+    j["reweighted_ess_ratio"] = m.reweighted_ess_ratio;
+    j["residue_draws_gibbs_weight"] = m.gibbs_weight;
+  }
   return j;
 }
 

@@ -2,6 +2,7 @@
 
 #include "checks/passivity.hpp"
 #include "core/errors.hpp"
+#include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
 
 #include <algorithm>
@@ -20,27 +21,83 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
   return derive_seed(user_seed, static_cast<std::uint64_t>(order.q()) * 1000u + static_cast<std::uint64_t>(order.s()));
 }
 
-ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress, int round) {
+SamplerKind parse_sampler_kind(const std::string& text) {
+  if (text == "poles") return SamplerKind::poles;
+  if (text == "full") return SamplerKind::full;
+  throw InputError(fmt::format("--sampler '{}': expected full (default) or poles", text));
+}
+
+namespace {
+
+NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round) {
+  NestedSettings sampler = settings.sampler;
+  sampler.seed = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
+  sampler.live = settings.sampler.live << round;
+  return sampler;
+}
+
+ModelResult run_full(const Measurement& data, const Order& order, const FitSettings& settings,
+                     const NestedProgressFn& progress, int round) {
   const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
   const Likelihood likelihood(data, order, settings.data_count);
   const auto log_likelihood = [&](const double* th) {
     if (settings.passive && !checks::is_passive(order, th)) return -std::numeric_limits<double>::infinity();
     return likelihood(th);
   };
-  NestedSettings sampler = settings.sampler;
-  sampler.seed = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
-  sampler.live = settings.sampler.live << round;
-  const auto start = std::chrono::steady_clock::now();
+  const NestedSettings sampler = order_sampler_settings(order, settings, round);
   ModelResult result{order,
                      run_nested_sampling(
                          order.dim(), [&](const double* u, double* th) { transform(u, th); },
                          log_likelihood, sampler, progress,
                          [&](double* u) { transform.fold(u); }),
-                     sampler.live, 0.0, {}, {}};
+                     sampler.live, 0.0, {}};
+  result.sampler = "full";
+  return result;
+}
+
+ModelResult run_poles(const Measurement& data, const Order& order, const FitSettings& settings,
+                      const NestedProgressFn& progress, int round) {
+  const NestedSettings sampler = order_sampler_settings(order, settings, round);
+  PolesRun poles = run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
+                                     sampler, derive_seed(sampler.seed, 0x7e51dULL), progress);
+  ModelResult result{order, std::move(poles.run), sampler.live, 0.0, {}};
+  result.sampler = "poles_analytic_residues";
+  result.truncation_correction = poles.truncation_correction;
+  result.truncation_correction_error = poles.truncation_correction_error;
+  result.reweighted_ess_ratio = poles.reweighted_ess_ratio;
+  result.gibbs_weight = poles.gibbs_weight;
+  return result;
+}
+
+}  // namespace
+
+ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
+                      const NestedProgressFn& progress, int round) {
+  const auto start = std::chrono::steady_clock::now();
+  ModelResult result{Order(0, 0), {}, 0, 0.0, {}};
+  if (settings.sampler_kind == SamplerKind::full) {
+    result = run_full(data, order, settings, progress, round);
+  } else if (settings.passive) {
+    // Passivity depends on the residues, which the pole sampler integrates over the whole box.
+    result = run_full(data, order, settings, progress, round);
+    result.sampler_note = "--passive needs the residues in the sampled space";
+  } else {
+    result = run_poles(data, order, settings, progress, round);
+    constexpr double kMinEssRatio = 0.5;
+    if (!(result.truncation_correction_error <= settings.truncation_tolerance &&
+          result.reweighted_ess_ratio >= kMinEssRatio)) {
+      const std::string why = fmt::format(
+          "the residue box truncates the conditional posterior of the residues too much to correct (correction "
+          "{:.3g} ± {:.3g} nats, tolerance {:.3g}; effective-sample ratio {:.2f}, minimum {:.2f}): sampled in full",
+          result.truncation_correction, result.truncation_correction_error, settings.truncation_tolerance,
+          result.reweighted_ess_ratio, kMinEssRatio);
+      result = run_full(data, order, settings, progress, round);
+      result.sampler_note = why;
+    }
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (std::size_t i = 0; i < result.run.size(); ++i)
-      fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
+    fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
   result.parameters = summarize(result.run, order.parameter_names());
   return result;
 }

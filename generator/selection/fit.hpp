@@ -21,6 +21,13 @@
 
 namespace admitgen {
 
+/// How each order is sampled: `poles` integrates the residues out analytically and samples the poles
+/// only (inference/poles_sampler.hpp), falling back to `full` for an order where the residue box
+/// truncates the conditional posterior of r too much to be corrected (FitSettings::truncation_tolerance); `full` samples
+/// every parameter (docs/method.md).
+enum class SamplerKind { poles, full };
+SamplerKind parse_sampler_kind(const std::string& text);  ///< "full" | "poles"
+
 struct FitSettings {
   int qmax = 3;
   int smax = 3;
@@ -39,6 +46,13 @@ struct FitSettings {
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;
+  /// full by default: the pole sampler is not yet validated everywhere (docs/method.md, "Status").
+  SamplerKind sampler_kind = SamplerKind::full;
+  /// The pole sampler's box correction (inference/poles_sampler.hpp) is accepted when its Monte Carlo
+  /// error is at most this (nats; a fraction of the sampling error √(H/n) ≈ 0.2-0.6 of the default
+  /// runs) and the reweighting keeps at least half the effective sample size; otherwise the order is
+  /// re-run with the full sampler.
+  double truncation_tolerance = 0.05;
 };
 
 struct ModelResult {
@@ -48,7 +62,17 @@ struct ModelResult {
   double seconds = 0.0;
   std::vector<ParameterSummary> parameters;  ///< folded to the reduced form
   /// Poles of the best sample, residues refitted under Re G ≥ 0 (set by run_fit; what emit uses by default).
-  passivity::PassiveEstimate passive;
+  passivity::PassiveEstimate passive{};
+  /// "poles_analytic_residues" or "full" (fit.json per model "sampler").
+  std::string sampler = "full";
+  /// Why the full sampler ran when the pole sampler was asked for (empty otherwise).
+  std::string sampler_note{};
+  /// Pole sampler only: the box correction of ln Z, its Monte Carlo error (nats), the effective-sample
+  /// ratio of the reweighting, and the posterior weight of residues drawn by the Gibbs fallback.
+  double truncation_correction = 0.0;
+  double truncation_correction_error = 0.0;
+  double reweighted_ess_ratio = 1.0;
+  double gibbs_weight = 0.0;
 };
 
 /// Posterior predictive band at the data frequencies: 2.5 %, 50 %, 97.5 % quantiles.

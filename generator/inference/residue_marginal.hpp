@@ -1,0 +1,77 @@
+/// @file
+/// The likelihood of the poles alone, the residues integrated out analytically (docs/method.md,
+/// "Residues given the poles", which derives every formula here).
+///
+/// For poles ψ the model is G = Φ r (model/residue_basis.hpp). Stacking real and imaginary parts,
+/// A = [Re Φ; Im Φ] (2N × p), b = [Re D; Im D]:
+///   Σ|D − G|² = |b − A r|² = S_min + (r − r̂)ᵀ M (r − r̂),   M = AᵀA = ReΦᵀReΦ + ImΦᵀImΦ,  r̂ = M⁻¹Aᵀb,
+/// so L(ψ, r) ∝ S(r)^{−K/2} is, in r, a multivariate Student t with ν = K − p degrees of freedom,
+/// location r̂ and scale matrix S_min/ν · M⁻¹, and
+///   (1/V_r) ∫_box L dr = P_box · Γ(ν/2)/2 · π^{−ν/2} S_min^{−ν/2} det(M)^{−1/2} / V_r,
+/// P_box being the t's mass inside the residue box (V_r its volume). P_box is bounded by its
+/// coordinate marginals (exact univariate t intervals):
+///   P_lo = max(0, 1 − Σ_k (1 − P_k)) ≤ P_box ≤ P_up = min_k P_k,
+/// and the sampler uses P_up (exact for p = 1). The run then reports ln Z_up ≥ ln Z ≥ ln Z_up + ln(1 − g),
+/// g = E_posterior[1 − P_lo/P_up], which fit_order checks against a tolerance (selection/fit.hpp).
+#pragma once
+
+#include "data/measurement.hpp"
+#include "inference/likelihood.hpp"
+#include "inference/priors.hpp"
+#include "inference/student_t.hpp"
+#include "model/order.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+namespace admitgen {
+
+/// The conditional posterior of r for one set of poles.
+struct ResidueConditional {
+  bool valid = false;          ///< false when M is numerically singular (then ln L = −∞)
+  Eigen::VectorXd mean;        ///< r̂
+  Eigen::VectorXd scale;       ///< D = diag(M)^{−1/2}: M = D⁻¹ M̃ D⁻¹
+  Eigen::MatrixXd chol;        ///< lower Cholesky factor L̃ of M̃ = D M D
+  Eigen::MatrixXd m;           ///< M itself (for Gibbs conditionals)
+  double s_min = 0.0;          ///< S_min = min_r Σ|D − G|²
+  double nu = 0.0;             ///< K − p
+  double k = 0.0;              ///< K
+  double log_p_up = 0.0;       ///< ln P_up
+  double log_p_lo = 0.0;       ///< ln P_lo (−∞ when the union bound gives 0)
+  double log_marginal = 0.0;   ///< ln[(1/V_r) ∫ L dr] with P_up in place of P_box
+};
+
+/// Holds data, basis and work buffers: one instance per thread.
+class ResidueMarginal {
+ public:
+  ResidueMarginal(const Measurement& data, const Order& order, DataCount count, const PriorRanges& ranges);
+
+  /// ln of the residue-marginal likelihood at poles ψ (inference/pole_space.hpp packing).
+  double operator()(const double* poles) const;
+  /// Everything about r given ψ.
+  const ResidueConditional& conditional(const double* poles) const;
+  /// Fills A = [Re Φ; Im Φ] (2N × p) at ψ: model/residue_basis.hpp's columns, vectorised over ω.
+  void fill_basis(const double* poles, Eigen::MatrixXd& a) const;
+
+  const Eigen::VectorXd& box_lo() const { return lo_; }
+  const Eigen::VectorXd& box_hi() const { return hi_; }
+  const Order& order() const { return order_; }
+  int k() const { return k_; }
+
+ private:
+  Order order_;
+  Eigen::ArrayXd omega_, omega2_;
+  Eigen::VectorXd b_;
+  double b_norm2_;
+  int k_, p_;
+  StudentTail tail_;  ///< t_ν tails, ν = K − p
+  double constant_;    ///< ln Γ(ν/2) − ln 2 − (ν/2) ln π − ln V_r
+  Eigen::VectorXd lo_, hi_;
+  mutable Eigen::MatrixXd a_, inv_chol_, scaled_;
+  mutable Eigen::VectorXd g_;
+  mutable Eigen::LLT<Eigen::MatrixXd> llt_;
+  mutable Eigen::ArrayXd dp_, dm_, inv_;
+  mutable ResidueConditional c_;
+};
+
+}  // namespace admitgen
