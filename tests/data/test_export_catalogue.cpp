@@ -37,8 +37,8 @@ double worst_condition(const Reference& r) {
   return kappa;
 }
 
-std::string write_export(const Export& e) {
-  static const std::string dir = test::scratch_dir("export_catalogue_reader");  // made fresh once per run
+/// Writes an export into `dir` (each test case has its own: CTest runs cases as parallel processes).
+std::string write_export(const std::string& dir, const Export& e) {
   const std::string path = dir + "/" + e.file;
   test::write_text(path, e.text);
   return path;
@@ -53,10 +53,11 @@ TEST_CASE("export catalogue: every realistic export reads to the reference admit
   REQUIRE(2.0 * kOps * 2.0 * std::numeric_limits<double>::epsilon() * kappa < kTolerance);
   const auto catalogue = test::export_catalogue(r);
   CHECK(catalogue.size() >= 15);
+  const std::string dir = test::scratch_dir("export_catalogue_reader");
   int reads = 0, errors = 0;
   for (const Export& e : catalogue) {
     INFO(std::string(e.name));
-    const std::string path = write_export(e);
+    const std::string path = write_export(dir, e);
     if (e.error.empty()) {
       const Measurement m = read_measurement(path, e.options);
       INFO(m.read_as);
@@ -85,7 +86,8 @@ TEST_CASE("export catalogue: every realistic export reads to the reference admit
 TEST_CASE("export catalogue: the reference itself reads exactly (17 digits round-trip)") {
   const Reference r;
   const auto catalogue = test::export_catalogue(r);
-  const Measurement plain = read_measurement(write_export(catalogue.front()), catalogue.front().options);
+  const std::string dir = test::scratch_dir("export_catalogue_round_trip");
+  const Measurement plain = read_measurement(write_export(dir, catalogue.front()), catalogue.front().options);
   CHECK((plain.f_hz - r.f).abs().maxCoeff() == 0.0);
   CHECK((plain.y - r.y).abs().maxCoeff() == 0.0);
   CHECK(plain.quantity == "admittance");
