@@ -20,7 +20,8 @@ foreach(tool as ld)
   endif()
   file(CREATE_LINK "${path}" "${WORK_DIR}/bin/${tool}" SYMBOLIC)
 endforeach()
-set(env ${CMAKE_COMMAND} -E env "PATH=${WORK_DIR}/bin" --unset=CXX --unset=CC)
+set(env ${CMAKE_COMMAND} -E env "PATH=${WORK_DIR}/bin" --unset=CXX --unset=CC
+    --unset=CMAKE_C_COMPILER_LAUNCHER --unset=CMAKE_CXX_COMPILER_LAUNCHER)  # a launcher (ccache) is not on that PATH
 
 set(disabled)
 foreach(pkg Eigen3 CLI11 nlohmann_json fmt OpenSSL Threads doctest PkgConfig Python3)
