@@ -31,6 +31,7 @@ struct FitOptions {
   bool no_symmetry_reduction = false;
   bool passive = false;
   bool quiet = false;
+  bool cost_only = false;
 };
 
 void setup_fit_command(CLI::App& app, int& exit_code);

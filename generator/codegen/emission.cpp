@@ -431,6 +431,9 @@ EmittedHeader read_emitted_header(const std::string& text, const std::string& or
     h.name = j.at("name").get<std::string>();
     const auto order = Order::parse(j.at("order").get<std::string>());
     const auto theta = j.at("continuous").at("theta").get<std::vector<double>>();
+    if (theta.size() != static_cast<std::size_t>(order.dim()))
+      throw InputError(fmt::format("{}: admitgen:model block: continuous theta has {} values, order {} needs {}", origin,
+                                   theta.size(), order.name(), order.dim()));
     h.surface = MultipoleSurface{order, Eigen::Map<const Eigen::VectorXd>(theta.data(), Eigen::Index(theta.size()))};
     h.data_f_min_hz = j.at("data_f_min_hz").get<double>();
     h.data_f_max_hz = j.at("data_f_max_hz").get<double>();
