@@ -50,7 +50,7 @@ PriorRanges PriorRanges::from_file(const std::string& path) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow (1e999)
     throw FileError(path, 0, fmt::format("not valid JSON: {}", e.what()));
   }
   if (!j.is_object()) throw FileError(path, 0, "expected a JSON object of {\"family\": [lo, hi]}");

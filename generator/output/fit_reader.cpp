@@ -12,7 +12,7 @@ nlohmann::json read_fit_file(const std::string& path) {
   const std::string text = read_bounded(path, kMaxDocumentBytes, "fit");
   try {
     return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow (1e999)
     throw FileError(path, 0, fmt::format("not JSON ({})", e.what()));
   }
 }

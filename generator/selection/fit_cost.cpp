@@ -11,7 +11,7 @@ namespace admitgen {
 namespace {
 
 /// Evaluations per order / (live × dim × slices), from the bundled fits (fit_cost.hpp).
-constexpr double kEvaluationsPerLiveDimSlice = 45.0;
+constexpr double kEvaluationsPerLiveDimSlice = 27.0;
 
 /// θ in the middle of every prior range (a valid point of any order: λ, α > 0).
 std::vector<double> prior_centre(const Order& order, const PriorRanges& priors) {

@@ -3,9 +3,9 @@
 /// Nested sampling replaces each dead point with a slice walk of (3 + dim) one-dimensional slices, and the
 /// number of iterations grows with live points × information; over the bundled fits (samples/fits,
 /// samples/synthetic: live 100 and 500, dim 1-15, 200-1025 points) the likelihood evaluations of one order
-/// were 27-63 × live × dim × (3 + dim) (pass --slices to change the last factor). The estimate takes 45,
-/// so it is right within a factor ~2 on those fits; missed-mode re-runs and the passive truncation come
-/// on top. One evaluation is timed here, at the largest order, on the data as read; it costs in
+/// were 15-51 × live × dim × (3 + dim) (the last factor is the slices per step, --slices), 19-36 × over a
+/// whole fit. The estimate takes 27, so a whole fit's count is right within a factor ~2 on those fits;
+/// missed-mode re-runs and the passive truncation come on top. One evaluation is timed here, at the largest order, on the data as read; it costs in
 /// proportion to points × (1 + Q + S).
 #pragma once
 
