@@ -157,6 +157,8 @@ TEST_CASE("check catalogue: broken fit.json and headers exit 1 naming the check,
       {"string_parameter.json", fit_with([](auto& f) { f["parameters"][2]["mean"] = "fast"; }, reference)},
       {"unknown_order.json", fit_with([](auto& f) { f["selected"]["order"] = "Q9S9"; }, reference)},
       {"short_theta.h", replace_after(q31, "\"theta\":[", block_value(q31, 0) + ",", "")},
+      {"float_mantissa.h", replace_after(q31, "\"q31\":{", "\"fir\":[", "\"fir\":[1.5e20,")},  // found by fuzzing
+      {"huge_shift.h", replace_after(q31, "\"q31\":{", "\"acc_shift\":", "\"acc_shift\":9")},  // 930: outside 1..62
       {"block_not_json.h", "/* admitgen:model {\"format\": \"q31\", admitgen:end */\n"},
       {"binary.h", std::string("\x7f" "ELF\x02\x01\x01\0\0\0", 10)},
   };
