@@ -46,7 +46,8 @@ CheckSubject load_subject(const std::string& path, const std::string& order, Est
   const std::string text = read_bounded(path, kMaxDocumentBytes, "fit.json or header");
   const auto json = nlohmann::json::parse(text, nullptr, false);
   if (!json.is_discarded()) {
-    if (!json.is_object() || json.value("schema", std::string()) != "admitgen.fit/1")
+    const auto schema = json.is_object() ? json.find("schema") : json.end();  // value() throws on a non-string
+    if (schema == json.end() || !schema->is_string() || *schema != "admitgen.fit/1")
       throw FileError(path, 0, "JSON but not an admitgen fit (schema admitgen.fit/1)");
     return subject_from_fit(json, path, order, estimate);
   }
