@@ -150,6 +150,7 @@ TEST_CASE("check catalogue: broken fit.json and headers exit 1 naming the check,
       {"empty.json", ""},
       {"truncated.json", reference.dump(1).substr(0, 400)},
       {"other_schema.json", R"({"schema": "admitgen.emit/1", "models": []})"},
+      {"schema_not_a_string.json", R"({"schema": ["admitgen.fit/1"]})"},  // found by fuzzing (was exit 3)
       {"missing_beta.json", fit_with([](auto& f) {
          auto& ps = f["parameters"];
          ps.erase(ps.size() - 1);  // beta_1
