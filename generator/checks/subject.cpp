@@ -1,11 +1,10 @@
 #include "checks/check_suite.hpp"
 
+#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
 
 namespace admitgen::checks {
 namespace {
@@ -33,7 +32,7 @@ CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& orig
     estimate = Estimate::mean;
     s.note = "the fit holds no passive estimate (written by an older admitgen): its posterior mean is checked";
   }
-  s.surface = multipole_from_fit(fit, order, estimate, origin);
+  s.surface = multipole_from_fit(fit, order, estimate, origin, Causality::reported);  // named by check_causality
   try {
     s.data_f_min_hz = fit.at("input").at("f_min_hz").get<double>();
     s.data_f_max_hz = fit.at("input").at("f_max_hz").get<double>();
@@ -44,12 +43,11 @@ CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& orig
 }
 
 CheckSubject load_subject(const std::string& path, const std::string& order, Estimate estimate) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, "cannot read the file");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = read_bounded(path, kMaxDocumentBytes, "fit.json or header");
   const auto json = nlohmann::json::parse(text, nullptr, false);
   if (!json.is_discarded()) {
-    if (!json.is_object() || json.value("schema", std::string()) != "admitgen.fit/1")
+    const auto schema = json.is_object() ? json.find("schema") : json.end();  // value() throws on a non-string
+    if (schema == json.end() || !schema->is_string() || *schema != "admitgen.fit/1")
       throw FileError(path, 0, "JSON but not an admitgen fit (schema admitgen.fit/1)");
     return subject_from_fit(json, path, order, estimate);
   }

@@ -7,6 +7,7 @@
 #include "output/fit_json.hpp"
 #include "output/posterior_export.hpp"
 #include "report/fit_report.hpp"
+#include "selection/fit_cost.hpp"
 #include "selection/fit.hpp"
 #include "selection/goodness_of_fit.hpp"
 
@@ -127,6 +128,8 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
                   "fit.json says which ran)")
       ->check(CLI::IsMember({"poles", "full"}))->capture_default_str();
   sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
+  sub->add_flag("--cost-only", opt->cost_only,
+                "Read the data, print the cost estimate (printed before every fit) and stop: nothing is written");
   sub->callback([opt, &exit_code] { exit_code = run_fit_command(*opt); });
 }
 
@@ -134,6 +137,8 @@ int run_fit_command(const FitOptions& o) {
   const ReadOptions read = o.read.to_read_options();
   const FitSettings settings = to_settings(o);
   const Measurement data = read_measurement(o.data, read);
+  if (o.cost_only || !o.quiet) fmt::print(stderr, "{}\n", estimate_fit_cost(data, settings).describe());
+  if (o.cost_only) return 0;
   CreatedDirectories created(o.out);
   ensure_writable_directory(o.out);
   Progress progress(!o.quiet);

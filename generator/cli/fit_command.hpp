@@ -32,6 +32,7 @@ struct FitOptions {
   bool passive = false;
   std::string sampler = "full";  ///< full | poles (residues integrated analytically)
   bool quiet = false;
+  bool cost_only = false;
 };
 
 void setup_fit_command(CLI::App& app, int& exit_code);

@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     fmt::print(stderr, "admitgen: error: {}\nRun with --help for usage.\n", e.what());
     return 2;
+  } catch (const admitgen::UnsafeModelError& e) {
+    fmt::print(stderr, "admitgen: error: {}\n", e.what());
+    return 1;  // read, and unsafe: a check fails (the same exit code as admitgen check)
   } catch (const admitgen::InputError& e) {
     fmt::print(stderr, "admitgen: error: {}\n", e.what());
     return 2;

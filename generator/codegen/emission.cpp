@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <regex>
 #include <set>
 
@@ -431,26 +432,60 @@ EmittedHeader read_emitted_header(const std::string& text, const std::string& or
     h.name = j.at("name").get<std::string>();
     const auto order = Order::parse(j.at("order").get<std::string>());
     const auto theta = j.at("continuous").at("theta").get<std::vector<double>>();
+    if (theta.size() != static_cast<std::size_t>(order.dim()))
+      throw InputError(fmt::format("{}: admitgen:model block: continuous theta has {} values, order {} needs {}", origin,
+                                   theta.size(), order.name(), order.dim()));
     h.surface = MultipoleSurface{order, Eigen::Map<const Eigen::VectorXd>(theta.data(), Eigen::Index(theta.size()))};
     h.data_f_min_hz = j.at("data_f_min_hz").get<double>();
     h.data_f_max_hz = j.at("data_f_max_hz").get<double>();
+    // Integers are range-checked before conversion (a JSON float or an out-of-range value would make the
+    // conversion undefined), and the fixed-point fields against the bounds the runtime enforces at init
+    // (docs/runtime.md, "Limits and misuse": it would refuse the model with ADMITGEN_RT_BAD_MODEL).
+    const auto integer = [&](const nlohmann::json& v, const std::string& what, long long lo, long long hi) {
+      if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi ||
+          (v.is_number_unsigned() && v.get<unsigned long long>() > static_cast<unsigned long long>(hi)))
+        throw InputError(fmt::format("{}: admitgen:model block: {} must be an integer in [{}, {}] (value {})", origin, what,
+                                     lo, hi, v.dump()));
+      return static_cast<std::int32_t>(v.get<long long>());
+    };
     for (const auto& r : j.at("rates")) {
       EmittedHeader::Rate rate;
-      rate.fs_hz = r.at("fs_hz").get<int>();
+      rate.fs_hz = integer(r.at("fs_hz"), "fs_hz", 1000, 1000000);
       const auto& coeffs = r.at(format_name(h.format));
       if (h.format == Format::f32) {
         rate.model = model_from_tables(coeffs, rate.fs_hz);
       } else {
         FixedCoefficients q;
         q.format = h.format;
-        q.bits = coeffs.at("bits").get<int>();
-        q.out_shift = coeffs.at("out_shift").get<int>();
-        q.y_exp = coeffs.at("y_exp").get<int>();
-        q.acc_shift = coeffs.at("acc_shift").get<int>();
+        const int bits = h.format == Format::q31 ? 31 : 15;
+        const long long m_max = (1LL << bits) - 1, m_min = -(1LL << bits);  // mantissas: int32 or int16
+        q.bits = integer(coeffs.at("bits"), "bits", bits, bits);
+        q.out_shift = integer(coeffs.at("out_shift"), "out_shift", -62, 62);
+        q.y_exp = integer(coeffs.at("y_exp"), "y_exp", -62, 62);
+        q.acc_shift = integer(coeffs.at("acc_shift"), "acc_shift", 1, 62);
         q.l1_norm = coeffs.at("l1_norm").get<double>();
-        q.fir = coeffs.at("fir").get<std::vector<std::int32_t>>();
-        for (const auto& t : coeffs.at("real")) q.real.push_back({t.at(0), t.at(1), t.at(2)});
-        for (const auto& p : coeffs.at("pair")) q.pair.push_back({p.at(0), p.at(1), p.at(2), p.at(3), p.at(4), p.at(5)});
+        for (const auto& v : coeffs.at("fir")) q.fir.push_back(integer(v, "a fir mantissa", m_min, m_max));
+        for (const auto& t : coeffs.at("real"))
+          q.real.push_back({integer(t.at(0), "a real pole's eps", m_min, m_max),
+                            integer(t.at(1), "a real pole's shift", 1 - bits, 62 - bits),
+                            integer(t.at(2), "a real pole's c", m_min, m_max)});
+        for (const auto& t : coeffs.at("pair")) {
+          q.pair.push_back({integer(t.at(0), "a pair's e_r", m_min, m_max), integer(t.at(1), "a pair's p_i", m_min, m_max),
+                            integer(t.at(2), "a pair's g", m_min, m_max),
+                            integer(t.at(3), "a pair's shift", 1 - bits, 62 - bits),
+                            integer(t.at(4), "a pair's c_r", m_min, m_max), integer(t.at(5), "a pair's c_i", m_min, m_max)});
+          const auto& p = q.pair.back();
+          if (std::abs(std::int64_t{p.e_r}) + std::abs(std::int64_t{p.p_i}) + std::abs(std::int64_t{p.g}) > (1LL << 31))
+            throw InputError(fmt::format("{}: admitgen:model block: pair {} has |e_r| + |p_i| + |g| > 2^31 (its 64-bit "
+                                         "update sum could overflow)", origin, q.pair.size()));
+        }
+        std::int64_t output_sum = 0;
+        for (const auto d : q.fir) output_sum += std::abs(std::int64_t{d});
+        for (const auto& t : q.real) output_sum += std::abs(std::int64_t{t.c});
+        for (const auto& t : q.pair) output_sum += std::abs(std::int64_t{t.c_r}) + std::abs(std::int64_t{t.c_i});
+        if (output_sum > (1LL << 31))
+          throw InputError(fmt::format("{}: admitgen:model block: the output table's sum of |mantissa| exceeds 2^31 (the "
+                                       "64-bit accumulator could overflow)", origin));
         rate.model = q.dequantised(rate.fs_hz);
         rate.fixed = q;
       }

@@ -1,6 +1,6 @@
 /// @file
 /// Error types. Bad input and impossible options are exceptions that carry what a user needs to fix
-/// them (file, line, offending value); only `main` turns them into exit code 2. Broken internal
+/// them (file, line, offending value); only `main` turns them into exit code 2 (1 for UnsafeModelError). Broken internal
 /// invariants go through ADMITGEN_ENSURE and are programming errors.
 #pragma once
 
@@ -34,6 +34,14 @@ class FileError : public InputError {
   }
   std::string path_;
   long line_;
+};
+
+/// A model that was read but is unsafe (a pole outside the open left half-plane): the readers of `emit`,
+/// `synth` and `diagnose` refuse it with the failing check named, as `admitgen check` reports it. Exit
+/// code 1 ("a check failed"), unlike the other InputErrors (2, "unusable input").
+class UnsafeModelError : public InputError {
+ public:
+  using InputError::InputError;
 };
 
 /// A violated internal invariant: a bug in admitgen, never the user's fault.

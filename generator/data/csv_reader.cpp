@@ -1,5 +1,6 @@
 #include "data/csv_reader.hpp"
 
+#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 #include "core/sha256.hpp"
 #include "data/column_selection.hpp"
@@ -22,10 +23,17 @@ struct Row {
   std::complex<double> value;  ///< as in the file, after magnitude/phase conversion
 };
 
+constexpr const char* kSmallerFile = "keep the band you fit (and every second row if need be) in a smaller file";
+
+/// The file's text, at most kMaxDataFileBytes and kMaxDataFileLines (csv_reader.hpp).
 std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, "cannot open data file");
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = read_bounded(path, kMaxDataFileBytes, "data file", kSmallerFile);
+  const auto lines = std::count(text.begin(), text.end(), '\n');
+  if (lines > kMaxDataFileLines)
+    throw FileError(path, kMaxDataFileLines + 1,
+                    fmt::format("more than {} lines, the most admitgen reads ({} here): {}", kMaxDataFileLines, lines,
+                                kSmallerFile));
+  return text;
 }
 
 /// How the two value columns turn into a complex number: scale of the magnitude, unit of the phase.

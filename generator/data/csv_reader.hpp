@@ -8,6 +8,7 @@
 #include "data/measurement.hpp"
 #include "data/read_options.hpp"
 
+#include <cstddef>
 #include <string>
 
 namespace admitgen {
@@ -16,5 +17,12 @@ namespace admitgen {
 Measurement read_measurement(const std::string& path, const ReadOptions& options);
 
 inline constexpr int kMinimumPoints = 3;
+
+/// Limits that bound the memory a data file can take (docs/reading-data.md, "Limits"): a larger file is
+/// refused before it is read in full (reading stops one byte past the limit), a file of more lines
+/// before it is split. 200000 lines hold any tube or impedance-analyser export (a 10^5-point table is
+/// ~10 MB); fitting more points than that takes days (`admitgen fit --cost-only` states the cost).
+inline constexpr std::size_t kMaxDataFileBytes = std::size_t{16} << 20;
+inline constexpr long kMaxDataFileLines = 200000;
 
 }  // namespace admitgen

@@ -1,11 +1,11 @@
 #include "inference/priors.hpp"
 
+#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -46,17 +46,18 @@ void PriorRanges::validate(const std::string& origin) const {
 }
 
 PriorRanges PriorRanges::from_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw FileError(path, 0, "cannot open prior file");
+  const std::string text = read_bounded(path, kMaxDocumentBytes, "prior file");
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow (1e999)
     throw FileError(path, 0, fmt::format("not valid JSON: {}", e.what()));
   }
   if (!j.is_object()) throw FileError(path, 0, "expected a JSON object of {\"family\": [lo, hi]}");
   PriorRanges ranges = table1();
-  for (const auto& [key, value] : j.items()) {
+  for (const auto& item : j.items()) {
+    const std::string& key = item.key();  // a named variable: lambdas cannot capture structured bindings in C++17
+    const auto& value = item.value();
     const auto* entry = std::find_if(std::begin(kFamilyKeys), std::end(kFamilyKeys),
                                      [&](const auto& kv) { return key == kv.second; });
     if (entry == std::end(kFamilyKeys))

@@ -1,19 +1,18 @@
 #include "output/fit_reader.hpp"
 
+#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 
 #include <fmt/format.h>
 
-#include <fstream>
 
 namespace admitgen {
 
 nlohmann::json read_fit_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, 0, "cannot read the fit");
+  const std::string text = read_bounded(path, kMaxDocumentBytes, "fit");
   try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow (1e999)
     throw FileError(path, 0, fmt::format("not JSON ({})", e.what()));
   }
 }

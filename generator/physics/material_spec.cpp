@@ -1,12 +1,12 @@
 #include "physics/material_spec.hpp"
 
+#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 #include "physics/parameter_list.hpp"
 
 #include <fmt/format.h>
 
 #include <cctype>
-#include <fstream>
 #include <map>
 #include <string_view>
 
@@ -101,11 +101,10 @@ MultipoleSurface parse_fit(const Item& item, const std::string& context) {
   p.finish();
   if (estimate != "mean" && estimate != "max_likelihood")
     throw InputError(p.error(fmt::format("estimate '{}': expected mean or max_likelihood", estimate)));
-  std::ifstream in(*file, std::ios::binary);
-  if (!in) throw FileError(*file, 0, "cannot open fit.json");
+  const std::string text = read_bounded(*file, kMaxDocumentBytes, "fit.json");
   nlohmann::json doc;
   try {
-    in >> doc;
+    doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw FileError(*file, 0, fmt::format("not valid JSON ({})", e.what()));
   }

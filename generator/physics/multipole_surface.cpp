@@ -58,7 +58,23 @@ bool fit_has_passive_estimate(const nlohmann::json& fit, const std::string& orde
   }
 }
 
-MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context) {
+std::vector<std::string> causality_violations(const MultipoleSurface& surface) {
+  const Order& o = surface.order;
+  const auto& th = surface.theta;
+  std::vector<std::string> violations;
+  for (int q = 0; q < o.q(); ++q)
+    if (!(th[Order::lambda(q)] > 0.0))
+      violations.push_back(fmt::format("lambda_{} = {:.6g} 1/s is not positive: the kernel A e^(-lambda t) grows "
+                                       "(pole in the right half-plane or on the axis)", q + 1, th[Order::lambda(q)]));
+  for (int k = 0; k < o.s(); ++k)
+    if (!(th[o.alpha(k)] > 0.0))
+      violations.push_back(fmt::format("alpha_{} = {:.6g} 1/s is not positive: the pair's kernel grows "
+                                       "(beta_{} = {:.6g} 1/s)", k + 1, th[o.alpha(k)], k + 1, th[o.beta(k)]));
+  return violations;
+}
+
+MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context,
+                                           Causality causality) {
   const Order order(count_indexed(values, "A"), count_indexed(values, "B"));
   const auto names = order.parameter_names();
   Eigen::VectorXd theta(order.dim());
@@ -67,23 +83,24 @@ MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& 
     if (it == values.end())
       throw InputError(fmt::format("{}: {} needs parameter '{}' (all of: {})", context, order.name(),
                                    names[static_cast<std::size_t>(i)], fmt::join(names, ", ")));
+    if (!std::isfinite(it->second))
+      throw InputError(fmt::format("{}: parameter '{}' is not a finite number ({})", context, it->first, it->second));
     theta[i] = it->second;
   }
   for (const auto& [name, value] : values)
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw InputError(fmt::format("{}: '{}' is not a parameter of {} (expected: {})", context, name, order.name(),
                                    fmt::join(names, ", ")));
-  for (int q = 0; q < order.q(); ++q)
-    if (!(theta[Order::lambda(q)] > 0.0))
-      throw InputError(fmt::format("{}: lambda_{} must be positive (causality)", context, q + 1));
-  for (int s = 0; s < order.s(); ++s)
-    if (!(theta[order.alpha(s)] > 0.0))
-      throw InputError(fmt::format("{}: alpha_{} must be positive (causality)", context, s + 1));
-  return {order, theta};
+  MultipoleSurface surface{order, theta};
+  if (causality == Causality::required)
+    if (const auto violations = causality_violations(surface); !violations.empty())
+      throw UnsafeModelError(fmt::format("{}: unsafe model, check 'causality' fails: {} (admitgen check names every failing "
+                                   "check)", context, violations.front()));
+  return surface;
 }
 
 MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string& order, Estimate estimate,
-                                    const std::string& origin) {
+                                    const std::string& origin, Causality causality) {
   try {
     if (estimate == Estimate::passive) {
       const auto& m = model_entry(fit, order, origin);
@@ -94,7 +111,7 @@ MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string
       std::map<std::string, double> values;
       for (const auto& [name, v] : member(member(m, "passive_estimate", origin), "parameters", origin).items())
         values[name] = v.get<double>();
-      return multipole_from_parameters(values, origin);
+      return multipole_from_parameters(values, origin, causality);
     }
     const std::string selected = member(member(fit, "selected", origin), "order", origin).get<std::string>();
     const nlohmann::json* parameters = &member(fit, "parameters", origin);
@@ -111,7 +128,7 @@ MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string
       const double v = member(p, field, origin).get<double>();
       values[member(p, "name", origin).get<std::string>()] = v;
     }
-    return multipole_from_parameters(values, origin);
+    return multipole_from_parameters(values, origin, causality);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a usable fit.json ({})", origin, e.what()));
   }

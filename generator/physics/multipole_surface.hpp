@@ -11,6 +11,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace admitgen {
 
@@ -19,10 +20,22 @@ struct MultipoleSurface {
   Eigen::VectorXd theta;  ///< packed as Order says: G_inf, A_1, lambda_1, …, B_1, C_1, alpha_1, beta_1, …
 };
 
+/// Whether a reader refuses a model whose poles are not all in the open left half-plane. Every consumer
+/// that builds a filter refuses it (emit, synth, diagnose); `admitgen check` reads it and reports the
+/// violation as its failing causality check (exit 1 rather than 2).
+enum class Causality { required, reported };
+
+/// What makes `surface` non-causal or marginally stable, one entry per pole (λ_q ≤ 0 or α_s ≤ 0, NaN
+/// included), naming the parameter and its value; empty when every pole is in the open left half-plane
+/// (physics.md §2.1). The causality check and the readers' refusals share these words.
+std::vector<std::string> causality_violations(const MultipoleSurface& surface);
+
 /// Builds θ from contract names (G_inf, A_q, lambda_q, B_s, C_s, alpha_s, beta_s). The order is the
 /// one the names imply (Q = number of A_q, S = number of B_s); every parameter of that order must be
-/// present. Throws InputError naming the missing or surplus name; `context` prefixes messages.
-MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context);
+/// present and finite. Throws InputError naming the missing, surplus or non-finite name, or (when
+/// causality is required) the first causality violation; `context` prefixes messages.
+MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& values, const std::string& context,
+                                           Causality causality = Causality::required);
 
 /// Which estimate of a fit to take as θ: the passive estimate (docs/passivity.md; best sample's poles,
 /// residues refitted under Re G ≥ 0), the posterior mean, or the highest-likelihood sample.
@@ -38,9 +51,9 @@ bool fit_has_passive_estimate(const nlohmann::json& fit, const std::string& orde
 
 /// The multipole of a parsed fit.json (schema admitgen.fit/1): the selected order by default, or
 /// `order` (e.g. "Q0S2") from its "models" list. Throws InputError naming `origin` if the document
-/// lacks what is needed.
+/// lacks what is needed, or (when causality is required) naming the parameter that makes it non-causal.
 MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string& order, Estimate estimate,
-                                    const std::string& origin);
+                                    const std::string& origin, Causality causality = Causality::required);
 
 /// y(f) = G(2πf) at f_hz.
 Eigen::ArrayXcd surface_admittance(const MultipoleSurface& surface, const Eigen::ArrayXd& f_hz);

@@ -247,7 +247,7 @@ std::string write_diagnosis_report_from_file(const std::string& diagnosis_json_p
   Json d;
   try {
     d = Json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow
     throw FileError(diagnosis_json_path, 0, fmt::format("not JSON ({})", e.what()));
   }
   const auto dir = std::filesystem::path(diagnosis_json_path).parent_path();

@@ -97,8 +97,8 @@ class WallFixed final : public RuntimeWall {
  public:
   using Bytes = std::size_t (*)(const Model*, int32_t);
   using Init = admitgen_rt_result (*)(Inst*, const Model*, int32_t, int32_t, void*, std::size_t);
-  using History = void (*)(const Inst*, T*);
-  using Commit = void (*)(Inst*, const T*, T*);
+  using History = admitgen_rt_result (*)(const Inst*, T*);
+  using Commit = admitgen_rt_result (*)(Inst*, const T*, T*);
 
   WallFixed(const codegen::FixedCoefficients& c, int fs, Bytes bytes, Init init, History history, Commit commit)
       : history_(history), commit_(commit), out_scale_(std::ldexp(1.0, c.out_shift - B)), h0_(c.dequantised(fs).h0()) {

@@ -72,15 +72,43 @@ extern "C" {
 #define ADMITGEN_RT_RESTRICT restrict
 #endif
 
-/** Result codes (int32_t; 0 success, negative failure). */
+/** Result codes (int32_t; 0 success, negative failure). Limits and misuse (docs/runtime.md): every
+ *  entry point checks its arguments before it touches memory and returns one of these; on failure
+ *  nothing is written (instance, state, output).
+ *   ADMITGEN_RT_INVALID_ARGS     n_nodes <= 0, n_frames < 0
+ *   ADMITGEN_RT_NULL_POINTER     inst, model, mem, pIn, pU or pHist NULL; an instance never initialised
+ *                                (inst->model NULL); a model table NULL while its count is not 0
+ *   ADMITGEN_RT_ABI_MISMATCH     model->abi_version != ADMITGEN_RT_ABI_VERSION
+ *   ADMITGEN_RT_RATE_MISMATCH    fs_hz != model->fs_hz (coefficients are only valid at their own rate)
+ *   ADMITGEN_RT_SHAPE_MISMATCH   reinit with other n_fir, n_real or n_pair
+ *   ADMITGEN_RT_BUFFER_TOO_SMALL bytes < *_state_bytes(model, n_nodes)
+ *   ADMITGEN_RT_MISALIGNED       mem not aligned to ADMITGEN_RT_ALIGN
+ *   ADMITGEN_RT_TOO_LARGE        n_nodes > ADMITGEN_RT_MAX_NODES, or the state size or the last buffer
+ *                                index (n_frames - 1) * stride + n_nodes does not fit in size_t
+ *   ADMITGEN_RT_BAD_STRIDE       stride < n_nodes (frames would overlap)
+ *   ADMITGEN_RT_BAD_MODEL        a count outside 0..ADMITGEN_RT_MAX_TERMS; fixed point: a shift outside
+ *                                1..62, or mantissas whose 64-bit sums could overflow (a pair's
+ *                                |e_r| + |p_i| + |g| > 2^31, the output table's sum |m| > 2^31)
+ *  Float input: NaN and +-Inf are not rejected (that would cost a test per sample); they propagate by
+ *  IEEE arithmetic into the states and outputs of that node only (nodes never mix), until
+ *  *_reset. Fixed-point input has no such values; every store saturates. */
 typedef int32_t admitgen_rt_result;
 #define ADMITGEN_RT_SUCCESS 0
 #define ADMITGEN_RT_INVALID_ARGS (-2)
+#define ADMITGEN_RT_NULL_POINTER (-3)
 #define ADMITGEN_RT_ABI_MISMATCH (-10)
 #define ADMITGEN_RT_RATE_MISMATCH (-11)
 #define ADMITGEN_RT_SHAPE_MISMATCH (-12)
 #define ADMITGEN_RT_BUFFER_TOO_SMALL (-13)
 #define ADMITGEN_RT_MISALIGNED (-14)
+#define ADMITGEN_RT_TOO_LARGE (-15)
+#define ADMITGEN_RT_BAD_STRIDE (-16)
+#define ADMITGEN_RT_BAD_MODEL (-17)
+
+/** Largest node count of one instance (larger counts: ADMITGEN_RT_TOO_LARGE; split the boundary). */
+#define ADMITGEN_RT_MAX_NODES (1 << 24)
+/** Largest n_fir, n_real and n_pair of a model. */
+#define ADMITGEN_RT_MAX_TERMS 64
 
 /** Discretisation methods (model->method). */
 #define ADMITGEN_RT_METHOD_MATCHED_EXP 1 /**< exact poles e^{-aT}, least-squares refitted numerators */
@@ -168,7 +196,8 @@ typedef struct admitgen_rt_q15 {
 /* ------------------------------------------------------------------------------------------------ */
 /* f32                                                                                                */
 
-/** Bytes of state memory for n_nodes nodes (0 if the arguments are invalid). */
+/** Bytes of state memory for n_nodes nodes (0 if the arguments are invalid or the size does not fit in
+ *  size_t; *_init then names the reason). */
 size_t admitgen_rt_state_bytes_f32(const admitgen_rt_model_f32 *model, int32_t n_nodes);
 /** Binds model and memory, checks ABI (ADMITGEN_RT_ABI_MISMATCH), that model->fs_hz == fs_hz
  *  (ADMITGEN_RT_RATE_MISMATCH: the coefficients are only valid at their own rate), size and alignment;
@@ -179,14 +208,16 @@ ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_f32(admitgen_rt_f32 *i
  *  must have the same n_fir, n_real, n_pair (ADMITGEN_RT_SHAPE_MISMATCH) and rate. */
 ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_f32(admitgen_rt_f32 *inst, const admitgen_rt_model_f32 *model,
                                                                 int32_t fs_hz);
-void admitgen_rt_reset_f32(admitgen_rt_f32 *inst);
+admitgen_rt_result admitgen_rt_reset_f32(admitgen_rt_f32 *inst);
 /** Filters n_frames frames of every node: node i of frame f is pIn[f*stride + i] (stride >= n_nodes).
- *  pIn == pOut is allowed; pOut may be NULL (advance the state only). */
-void admitgen_rt_process_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t n_frames, int32_t stride);
+ *  pIn == pOut is allowed; pOut may be NULL (advance the state only). Every entry point from here on
+ *  returns ADMITGEN_RT_SUCCESS or a code of "Limits and misuse" above (then nothing is written);
+ *  n_frames = 0 does nothing. */
+admitgen_rt_result admitgen_rt_process_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t n_frames, int32_t stride);
 /** History s^{n-1} of every node (pHist[n_nodes]): the output the next frame would give for u = 0. */
-void admitgen_rt_history_f32(const admitgen_rt_f32 *inst, float *pHist);
+admitgen_rt_result admitgen_rt_history_f32(const admitgen_rt_f32 *inst, float *pHist);
 /** Commits one frame u^n (pU[n_nodes]) after an implicit solve; writes y^n to pY if not NULL. */
-void admitgen_rt_commit_f32(admitgen_rt_f32 *inst, const float *pU, float *pY);
+admitgen_rt_result admitgen_rt_commit_f32(admitgen_rt_f32 *inst, const float *pU, float *pY);
 
 /* ------------------------------------------------------------------------------------------------ */
 /* q31 / q15: same lifecycle. Scaling and Overflow Behavior is documented in the kernel sources and
@@ -197,24 +228,24 @@ ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_q31(admitgen_rt_q31 *i
                                                               int32_t fs_hz, int32_t n_nodes, void *mem, size_t bytes);
 ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_q31(admitgen_rt_q31 *inst, const admitgen_rt_model_q31 *model,
                                                                 int32_t fs_hz);
-void admitgen_rt_reset_q31(admitgen_rt_q31 *inst);
-void admitgen_rt_process_q31(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride);
+admitgen_rt_result admitgen_rt_reset_q31(admitgen_rt_q31 *inst);
+admitgen_rt_result admitgen_rt_process_q31(admitgen_rt_q31 *inst, const int32_t *pIn, int32_t *pOut, int32_t n_frames, int32_t stride);
 /** History of every node (pHist[n_nodes], output units): exactly the output process would give next for u = 0,
  *  state unchanged. With the instantaneous gain h0 (the header's dequantised d_0 * 2^(y_exp - 31)):
  *  y^n = h0 u^n + s^{n-1} up to the output rounding. */
-void admitgen_rt_history_q31(const admitgen_rt_q31 *inst, int32_t *pHist);
+admitgen_rt_result admitgen_rt_history_q31(const admitgen_rt_q31 *inst, int32_t *pHist);
 /** Commits one frame u^n (pU[n_nodes]) after an implicit solve; writes y^n to pY if not NULL. */
-void admitgen_rt_commit_q31(admitgen_rt_q31 *inst, const int32_t *pU, int32_t *pY);
+admitgen_rt_result admitgen_rt_commit_q31(admitgen_rt_q31 *inst, const int32_t *pU, int32_t *pY);
 
 size_t admitgen_rt_state_bytes_q15(const admitgen_rt_model_q15 *model, int32_t n_nodes);
 ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_q15(admitgen_rt_q15 *inst, const admitgen_rt_model_q15 *model,
                                                               int32_t fs_hz, int32_t n_nodes, void *mem, size_t bytes);
 ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_reinit_q15(admitgen_rt_q15 *inst, const admitgen_rt_model_q15 *model,
                                                                 int32_t fs_hz);
-void admitgen_rt_reset_q15(admitgen_rt_q15 *inst);
-void admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride);
-void admitgen_rt_history_q15(const admitgen_rt_q15 *inst, int16_t *pHist);
-void admitgen_rt_commit_q15(admitgen_rt_q15 *inst, const int16_t *pU, int16_t *pY);
+admitgen_rt_result admitgen_rt_reset_q15(admitgen_rt_q15 *inst);
+admitgen_rt_result admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride);
+admitgen_rt_result admitgen_rt_history_q15(const admitgen_rt_q15 *inst, int16_t *pHist);
+admitgen_rt_result admitgen_rt_commit_q15(admitgen_rt_q15 *inst, const int16_t *pU, int16_t *pY);
 
 #ifdef __cplusplus
 }

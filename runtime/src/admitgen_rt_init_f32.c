@@ -13,11 +13,19 @@ size_t admitgen_rt_state_bytes_f32(const admitgen_rt_model_f32 *model, int32_t n
   return admitgen_rt__bytes(model->n_fir, model->n_real, model->n_pair, n_nodes, sizeof(float), sizeof(float));
 }
 
+/* The model's own consistency (docs/runtime.md, "Limits and misuse"), before anything reads its tables. */
+static admitgen_rt_result admitgen_rt__check_model_f32(const admitgen_rt_model_f32 *m) {
+  return admitgen_rt__check_tables(m->n_fir, m->n_real, m->n_pair, m->fir, m->real, m->pair);
+}
+
 admitgen_rt_result admitgen_rt_init_f32(admitgen_rt_f32 *inst, const admitgen_rt_model_f32 *model, int32_t fs_hz,
                                         int32_t n_nodes, void *mem, size_t bytes) {
   admitgen_rt__layout l;
   admitgen_rt_result r;
-  if (inst == NULL || model == NULL) return ADMITGEN_RT_INVALID_ARGS;
+  if (inst == NULL || model == NULL) return ADMITGEN_RT_NULL_POINTER;
+  if (model->abi_version != (uint32_t)ADMITGEN_RT_ABI_VERSION) return ADMITGEN_RT_ABI_MISMATCH;
+  r = admitgen_rt__check_model_f32(model);
+  if (r != ADMITGEN_RT_SUCCESS) return r;
   r = admitgen_rt__bind(model->abi_version, model->fs_hz, fs_hz, model->n_fir, model->n_real, model->n_pair, n_nodes,
                         sizeof(float), sizeof(float), mem, bytes, &l);
   if (r != ADMITGEN_RT_SUCCESS) return r;
@@ -35,14 +43,19 @@ admitgen_rt_result admitgen_rt_init_f32(admitgen_rt_f32 *inst, const admitgen_rt
 
 admitgen_rt_result admitgen_rt_reinit_f32(admitgen_rt_f32 *inst, const admitgen_rt_model_f32 *model, int32_t fs_hz) {
   admitgen_rt_result r;
-  if (inst == NULL || model == NULL || inst->model == NULL) return ADMITGEN_RT_INVALID_ARGS;
+  if (inst == NULL || model == NULL || inst->model == NULL) return ADMITGEN_RT_NULL_POINTER;
+  if (model->abi_version != (uint32_t)ADMITGEN_RT_ABI_VERSION) return ADMITGEN_RT_ABI_MISMATCH;
+  r = admitgen_rt__check_model_f32(model);
+  if (r != ADMITGEN_RT_SUCCESS) return r;
   r = admitgen_rt__check_swap(model->abi_version, model->fs_hz, fs_hz, model->n_fir, model->n_real, model->n_pair,
                               inst->model->n_fir, inst->model->n_real, inst->model->n_pair);
   if (r == ADMITGEN_RT_SUCCESS) inst->model = model;
   return r;
 }
 
-void admitgen_rt_reset_f32(admitgen_rt_f32 *inst) {
+admitgen_rt_result admitgen_rt_reset_f32(admitgen_rt_f32 *inst) {
+  if (inst == NULL || inst->model == NULL) return ADMITGEN_RT_NULL_POINTER;
   admitgen_rt__zero(inst->x, admitgen_rt_state_bytes_f32(inst->model, inst->n_nodes));
   inst->head = 0;
+  return ADMITGEN_RT_SUCCESS;
 }

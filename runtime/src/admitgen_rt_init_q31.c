@@ -13,11 +13,24 @@ size_t admitgen_rt_state_bytes_q31(const admitgen_rt_model_q31 *model, int32_t n
   return admitgen_rt__bytes(model->n_fir, model->n_real, model->n_pair, n_nodes, sizeof(int32_t), sizeof(int64_t));
 }
 
+/* The model's own consistency (docs/runtime.md, "Limits and misuse"), before anything reads its tables. */
+static admitgen_rt_result admitgen_rt__check_model_q31(const admitgen_rt_model_q31 *m) {
+  const admitgen_rt_result r = admitgen_rt__check_tables(m->n_fir, m->n_real, m->n_pair, m->fir, m->real, m->pair);
+  if (r != ADMITGEN_RT_SUCCESS) return r;
+  {
+    const admitgen_rt__qtab t = {m->fir, m->real, m->pair, NULL, NULL, NULL, m->n_fir, m->n_real, m->n_pair, 31, m->acc_shift};
+    return admitgen_rt__check_qmodel(&t);
+  }
+}
+
 admitgen_rt_result admitgen_rt_init_q31(admitgen_rt_q31 *inst, const admitgen_rt_model_q31 *model, int32_t fs_hz,
                                         int32_t n_nodes, void *mem, size_t bytes) {
   admitgen_rt__layout l;
   admitgen_rt_result r;
-  if (inst == NULL || model == NULL) return ADMITGEN_RT_INVALID_ARGS;
+  if (inst == NULL || model == NULL) return ADMITGEN_RT_NULL_POINTER;
+  if (model->abi_version != (uint32_t)ADMITGEN_RT_ABI_VERSION) return ADMITGEN_RT_ABI_MISMATCH;
+  r = admitgen_rt__check_model_q31(model);
+  if (r != ADMITGEN_RT_SUCCESS) return r;
   r = admitgen_rt__bind(model->abi_version, model->fs_hz, fs_hz, model->n_fir, model->n_real, model->n_pair, n_nodes,
                         sizeof(int32_t), sizeof(int64_t), mem, bytes, &l);
   if (r != ADMITGEN_RT_SUCCESS) return r;
@@ -35,14 +48,19 @@ admitgen_rt_result admitgen_rt_init_q31(admitgen_rt_q31 *inst, const admitgen_rt
 
 admitgen_rt_result admitgen_rt_reinit_q31(admitgen_rt_q31 *inst, const admitgen_rt_model_q31 *model, int32_t fs_hz) {
   admitgen_rt_result r;
-  if (inst == NULL || model == NULL || inst->model == NULL) return ADMITGEN_RT_INVALID_ARGS;
+  if (inst == NULL || model == NULL || inst->model == NULL) return ADMITGEN_RT_NULL_POINTER;
+  if (model->abi_version != (uint32_t)ADMITGEN_RT_ABI_VERSION) return ADMITGEN_RT_ABI_MISMATCH;
+  r = admitgen_rt__check_model_q31(model);
+  if (r != ADMITGEN_RT_SUCCESS) return r;
   r = admitgen_rt__check_swap(model->abi_version, model->fs_hz, fs_hz, model->n_fir, model->n_real, model->n_pair,
                               inst->model->n_fir, inst->model->n_real, inst->model->n_pair);
   if (r == ADMITGEN_RT_SUCCESS) inst->model = model;
   return r;
 }
 
-void admitgen_rt_reset_q31(admitgen_rt_q31 *inst) {
+admitgen_rt_result admitgen_rt_reset_q31(admitgen_rt_q31 *inst) {
+  if (inst == NULL || inst->model == NULL) return ADMITGEN_RT_NULL_POINTER;
   admitgen_rt__zero(inst->x, admitgen_rt_state_bytes_q31(inst->model, inst->n_nodes));
   inst->head = 0;
+  return ADMITGEN_RT_SUCCESS;
 }

@@ -12,7 +12,11 @@ typedef struct admitgen_rt__layout {
   void *x, *xi, *eta, *hist, *u, *acc;
 } admitgen_rt__layout;
 
-/* Bytes for the given shape (states of state_size bytes, accumulators of acc_size bytes); 0 if invalid. */
+/* Bytes for the given shape (states of state_size bytes, accumulators of acc_size bytes) in *bytes, or the
+ * reason there is no such size (BAD_MODEL, INVALID_ARGS, TOO_LARGE; *bytes = 0). */
+admitgen_rt_result admitgen_rt__size(int32_t n_fir, int32_t n_real, int32_t n_pair, int32_t n_nodes, size_t state_size,
+                                     size_t acc_size, size_t *bytes);
+/* admitgen_rt__size, 0 if there is none. */
 size_t admitgen_rt__bytes(int32_t n_fir, int32_t n_real, int32_t n_pair, int32_t n_nodes, size_t state_size,
                           size_t acc_size);
 /* Checks the common init arguments, carves mem into the arrays and zeroes it. */
@@ -22,6 +26,14 @@ admitgen_rt_result admitgen_rt__bind(uint32_t abi, int32_t model_fs, int32_t fs_
 /* Checks that a replacement model is compatible with a bound instance. */
 admitgen_rt_result admitgen_rt__check_swap(uint32_t abi, int32_t model_fs, int32_t fs_hz, int32_t n_fir, int32_t n_real,
                                            int32_t n_pair, int32_t old_fir, int32_t old_real, int32_t old_pair);
+/* A model's counts in 0..ADMITGEN_RT_MAX_TERMS (BAD_MODEL) and a table behind every non-zero count
+ * (NULL_POINTER). */
+admitgen_rt_result admitgen_rt__check_tables(int32_t n_fir, int32_t n_real, int32_t n_pair, const void *fir,
+                                             const void *real, const void *pair);
+/* The checks of a process/commit call before any memory is touched (docs/runtime.md, "Limits and misuse"):
+ * model is the instance's model (NULL: never initialised), in the input (NULL allowed only for 0 frames). */
+admitgen_rt_result admitgen_rt__check_call(const void *model, int32_t n_nodes, const void *in, int32_t n_frames,
+                                           int32_t stride);
 /* Zeroes n bytes (no libc dependency in the runtime). */
 void admitgen_rt__zero(void *p, size_t n);
 
@@ -180,6 +192,9 @@ typedef struct admitgen_rt__qio {
   int32_t stride;
 } admitgen_rt__qio;
 
+/* A fixed-point model's shifts and mantissa sums within the bounds that keep every 64-bit product sum and
+ * shift defined (BAD_MODEL otherwise; docs/runtime.md, "Limits and misuse"). Tables already checked non-NULL. */
+admitgen_rt_result admitgen_rt__check_qmodel(const admitgen_rt__qtab *t);
 /* Runs a call of either fixed format on an instance's states (head updated); commit 0 computes the outputs
  * of one frame without changing the state (history). */
 void admitgen_rt__qcall(const admitgen_rt__qtab *t, int32_t *x, int32_t *xi, int32_t *eta, int32_t *hist, int32_t n,

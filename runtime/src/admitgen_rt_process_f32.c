@@ -250,15 +250,20 @@ void admitgen_rt__process_f32_isa(admitgen_rt_f32 *inst, const float *pIn, float
   }
 }
 
-void admitgen_rt_process_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t n_frames, int32_t stride) {
-  admitgen_rt__process_f32_isa(inst, pIn, pOut, n_frames, stride, ADMITGEN_RT_ISA_BEST);
+admitgen_rt_result admitgen_rt_process_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t n_frames, int32_t stride) {
+  const admitgen_rt_result r =
+      inst == NULL ? ADMITGEN_RT_NULL_POINTER : admitgen_rt__check_call(inst->model, inst->n_nodes, pIn, n_frames, stride);
+  if (r == ADMITGEN_RT_SUCCESS && n_frames > 0) admitgen_rt__process_f32_isa(inst, pIn, pOut, n_frames, stride, ADMITGEN_RT_ISA_BEST);
+  return r;
 }
 
-void admitgen_rt_history_f32(const admitgen_rt_f32 *inst, float *pHist) {
+admitgen_rt_result admitgen_rt_history_f32(const admitgen_rt_f32 *inst, float *pHist) {
   /* s^{n-1}: the frame pass with u = 0, states and ring left unchanged */
+  if (inst == NULL || inst->model == NULL || pHist == NULL) return ADMITGEN_RT_NULL_POINTER;
   admitgen_rt__frame_f32(inst, NULL, pHist, 0, admitgen_rt__use_simd(ADMITGEN_RT_ISA_BEST));
+  return ADMITGEN_RT_SUCCESS;
 }
 
-void admitgen_rt_commit_f32(admitgen_rt_f32 *inst, const float *pU, float *pY) {
-  admitgen_rt_process_f32(inst, pU, pY, 1, inst->n_nodes);
+admitgen_rt_result admitgen_rt_commit_f32(admitgen_rt_f32 *inst, const float *pU, float *pY) {
+  return inst == NULL ? ADMITGEN_RT_NULL_POINTER : admitgen_rt_process_f32(inst, pU, pY, 1, inst->n_nodes);
 }

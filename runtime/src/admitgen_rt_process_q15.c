@@ -27,11 +27,14 @@ void admitgen_rt__process_q15_isa(admitgen_rt_q15 *inst, const int16_t *pIn, int
   admitgen_rt__qcall(&t, inst->x, inst->xi, inst->eta, inst->hist, inst->n_nodes, &inst->head, &io, n_frames, 1, isa);
 }
 
-void admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride) {
-  admitgen_rt__process_q15_isa(inst, pIn, pOut, n_frames, stride, ADMITGEN_RT_ISA_BEST);
+admitgen_rt_result admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride) {
+  const admitgen_rt_result r =
+      inst == NULL ? ADMITGEN_RT_NULL_POINTER : admitgen_rt__check_call(inst->model, inst->n_nodes, pIn, n_frames, stride);
+  if (r == ADMITGEN_RT_SUCCESS && n_frames > 0) admitgen_rt__process_q15_isa(inst, pIn, pOut, n_frames, stride, ADMITGEN_RT_ISA_BEST);
+  return r;
 }
 
-void admitgen_rt_history_q15(const admitgen_rt_q15 *inst, int16_t *pHist) {
+static void admitgen_rt__history_q15(const admitgen_rt_q15 *inst, int16_t *pHist) {
   /* one frame with u = 0 and commit 0: states and ring unchanged */
   const admitgen_rt_model_q15 *m = inst->model;
   const admitgen_rt__qtab t = {NULL, NULL, NULL, m->fir, m->real, m->pair, m->n_fir, m->n_real, m->n_pair, 15, m->acc_shift};
@@ -40,6 +43,12 @@ void admitgen_rt_history_q15(const admitgen_rt_q15 *inst, int16_t *pHist) {
   admitgen_rt__qcall(&t, inst->x, inst->xi, inst->eta, inst->hist, inst->n_nodes, &head, &io, 1, 0, ADMITGEN_RT_ISA_BEST);
 }
 
-void admitgen_rt_commit_q15(admitgen_rt_q15 *inst, const int16_t *pU, int16_t *pY) {
-  admitgen_rt_process_q15(inst, pU, pY, 1, inst->n_nodes);
+admitgen_rt_result admitgen_rt_history_q15(const admitgen_rt_q15 *inst, int16_t *pHist) {
+  if (inst == NULL || inst->model == NULL || pHist == NULL) return ADMITGEN_RT_NULL_POINTER;
+  admitgen_rt__history_q15(inst, pHist);
+  return ADMITGEN_RT_SUCCESS;
+}
+
+admitgen_rt_result admitgen_rt_commit_q15(admitgen_rt_q15 *inst, const int16_t *pU, int16_t *pY) {
+  return inst == NULL ? ADMITGEN_RT_NULL_POINTER : admitgen_rt_process_q15(inst, pU, pY, 1, inst->n_nodes);
 }

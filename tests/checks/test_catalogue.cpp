@@ -76,7 +76,7 @@ TEST_CASE("catalogue: good filters pass every check") {
 
 TEST_CASE("catalogue: broken continuous models") {
   // 1./2. negative lambda / alpha (continuous model edited in a header's block) → causality. (A fit.json
-  //       with lambda <= 0 is refused as unusable input, exit 2: multipole_from_fit validates it.)
+  //       with lambda <= 0 fails the same check: tests/cli/test_check_exit_catalogue.cpp.)
   for (const bool pair : {false, true}) {
     std::string h = render(emission(Format::q31, {48000}));
     const auto e = emission(Format::q31, {48000});

@@ -80,7 +80,7 @@ TEST_CASE("material SPEC: errors name the problem") {
       {"", "expected a layer name"},
       {"miki(sigma=1e4,d=5cm) + multipole(G_inf=1)", "cannot be combined"},
       {"multipole(G_inf=0.5, A_1=1)", "needs parameter 'lambda_1'"},
-      {"multipole(G_inf=0.5, A_1=1, lambda_1=-5)", "lambda_1 must be positive"},
+      {"multipole(G_inf=0.5, A_1=1, lambda_1=-5)", "lambda_1 = -5 1/s is not positive"},
       {"multipole(G_inf=0.5, A_2=1, lambda_2=5)", "'A_2' is not a parameter of Q0S0"},
       {"fit(file=/nonexistent/fit.json)", "cannot open fit.json"},
       {"fit(file=" + test::sample("synthetic/glass_beads_40mm_fit/fit.json") + ", order=Q3S3)", "order Q3S3 was not fitted"},

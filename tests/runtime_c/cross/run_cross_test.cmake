@@ -1,4 +1,4 @@
-# run_cross_test.cmake - CTest driver: builds the runtime and tests/runtime_c/rt_bitexact.c for one target
+# run_cross_test.cmake - CTest driver: builds the runtime and tests/runtime_c/rt_bitexact.c (armhf: also rt_misuse.c) for one target
 # with its Debian cross toolchain and runs it under QEMU (cross_common.cmake). Passes when the program exits 0
 # and prints "PASS (0 failures)". Without the toolchain or QEMU it prints ADMITGEN_CROSS_SKIPPED (CTest marks
 # the test skipped) and names the packages; .ci/install-deps installs them.
@@ -33,4 +33,16 @@ string(JOIN " " flags ${X_FLAGS})
 message("${TARGET} (${X_CC} ${flags} -O2):\n${out}")
 if(NOT rc EQUAL 0 OR NOT out MATCHES "PASS \\(0 failures\\)")
   message(FATAL_ERROR "${TARGET}: the runtime proof failed (exit status ${rc})")
+endif()
+# Limits and misuse (tests/runtime_c/rt_misuse.c) where size_t has 32 bits: the state size of 64 pairs at
+# ADMITGEN_RT_MAX_NODES nodes overflows it, and init must say ADMITGEN_RT_TOO_LARGE.
+string(COMPARE EQUAL "${TARGET}" armhf is_armhf)  # (if(TARGET ...) would test for a CMake target)
+if(is_armhf)
+  cross_link(X ${WORK}/rt_misuse ${SRC_DIR}/tests/runtime_c/rt_misuse.c "${objects}" -I${SRC_DIR}/runtime/include
+             -I${SRC_DIR}/runtime/src ${args})
+  cross_run(X ${WORK}/rt_misuse out rc)
+  message("${TARGET} rt_misuse:\n${out}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "PASS \\(0 failures\\)")
+    message(FATAL_ERROR "${TARGET}: the limits-and-misuse test failed (exit status ${rc})")
+  endif()
 endif()

@@ -1,0 +1,21 @@
+/// @file
+/// Fuzz target: the priors JSON reader (inference/priors.hpp, PriorRanges::from_file) and its
+/// validation. Bad input must end in InputError.
+#include "core/errors.hpp"
+#include "fuzz_input_file.hpp"
+#include "inference/priors.hpp"
+
+#include <cstddef>
+#include <cstdint>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace admitgen;
+  const std::string& path = fuzz::write_input_file(data, size, ".json");
+  try {
+    const auto ranges = PriorRanges::from_file(path);
+    ranges.validate(path);
+    (void)ranges.to_json();
+  } catch (const InputError&) {
+  }
+  return 0;
+}
