@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_bench.c - runtime benchmark: recursive convolution (admitgen runtime) vs direct convolution of the same
  * impulse response truncated at -100 dB, f32 / q31 / q15, 1 node (mono audio, 64 frames per call) and

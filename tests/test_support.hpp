@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Helpers shared by the tests: paths to the built CLI and the bundled samples, running the CLI in a
 /// child process with captured output, and scratch directories.

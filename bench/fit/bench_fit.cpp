@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Fit benchmark (a program, not a test): prints
 ///  1. likelihood evaluations per second and ns per (frequency point × pole term) for several orders,

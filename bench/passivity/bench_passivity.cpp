@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Passivity benchmark (a program, not a test; docs/passivity.md). For each data set it runs a fit and
 /// prints, measured in the same run:

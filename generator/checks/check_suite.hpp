@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen check` as a library: what is checked (a header's machine-readable block and C tables, or a
 /// fit's continuous model) and the six checks of the issue plus the header's self-consistency:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "checks/check_suite.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "checks/passivity.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Exact passivity (positive-realness) test of a stable rational admittance, physics.md §2.3:
 /// Re G(jω) ≥ 0 for every ω ≥ 0, decided by the imaginary-axis eigenvalues of the Hamiltonian matrix

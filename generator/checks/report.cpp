@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "checks/report.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The result of `admitgen check`: one entry per check, each failure named with where it is, the figures
 /// that decided it, rendered as text or as JSON (schema "admitgen.check/1").

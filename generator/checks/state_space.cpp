@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "checks/state_space.hpp"
 
 #include "core/errors.hpp"

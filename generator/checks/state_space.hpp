@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Real SISO state-space realisations of the continuous multipole model and of an emitted discrete
 /// filter, and the bilinear (Möbius) map of a discrete realisation to a continuous one (physics.md §2.3).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/check_command.hpp"
 
 #include "checks/check_suite.hpp"

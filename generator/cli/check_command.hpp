@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen check FILE.h|FIT.json [--json]`: proves an emitted filter (or a fit's continuous model)
 /// causal, stable, passive, free of overflow and limit cycles (checks/check_suite.hpp). Exit 0 when

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/data_options.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The data-reading options shared by every subcommand that reads measured data (fit, diagnose):
 /// layout (--delimiter, --decimal, --skip-rows), columns (--columns), quantity and units

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/diagnose_command.hpp"
 
 #include "codegen/coefficients.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen diagnose --real DATA.csv (--sim SIM.csv | --sim SPEC | --fit FIT.json) --out DIR
 /// [--fs HZ --format q31] [--tube-diameter M --mic-spacing M --mic-distance M] [--temperature C]`:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/emit_command.hpp"
 
 #include "codegen/emission.hpp"

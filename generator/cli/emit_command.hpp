@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen emit FIT.json --fs HZ [--fs HZ ...] --format f32|q31|q15 [--name IDENT] --out FILE.h`:
 /// the causal C header of the fit's model for the C99 runtime (codegen/emission.hpp), optionally the

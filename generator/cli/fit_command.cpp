@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/fit_command.hpp"
 
 #include "core/atomic_file.hpp"

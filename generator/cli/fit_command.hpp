@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen fit DATA --out DIR ...`: evidence of every order of the grid, selection, parameter
 /// summaries; writes DIR/fit.json and prints a summary table.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// admitgen command line: one options struct + setup + run function per subcommand (cli/*_command.*).
 /// Only this function maps errors to exit codes: 0 success, 1 a check found a violation, 2 bad input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cli/synth_command.hpp"
 
 #include "data/csv_writer.hpp"

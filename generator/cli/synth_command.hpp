@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen synth --material SPEC --out DATA.csv [--effect NAME:k=v,...]... [--noise STD] [--seed N]
 /// [--band FMIN:FMAX] [--points N] [--tube-diameter M --mic-spacing M --mic-distance M] [--temperature C]`:

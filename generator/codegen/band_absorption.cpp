@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "codegen/band_absorption.hpp"
 
 #include "core/errors.hpp"

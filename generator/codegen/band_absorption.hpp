@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Per-band absorption from the continuous model, for engines that take band absorption instead of a
 /// filter (Steam Audio, FMOD/Wwise-style material tables; physics.md §4 "Geometric engines").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "codegen/coefficients.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The coefficients actually emitted for one sample rate and format, and a bit-exact C++ model of the
 /// fixed-point runtime kernels (runtime/src/admitgen_rt_process_q31.c, _q15.c): the source of golden

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "codegen/discrete_model.hpp"
 
 #include "core/errors.hpp"

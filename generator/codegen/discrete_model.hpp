@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Continuous multipole admittance → discrete filter at one sample rate (physics.md §1.2-1.3).
 ///

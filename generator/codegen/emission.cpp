@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "codegen/emission.hpp"
 
 #include "codegen/template_text.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen emit` as a library: fit.json → discrete models per sample rate → quantised tables →
 /// the generated C header (templates/admitgen_boundary.h.in), band-absorption JSON, golden vectors,

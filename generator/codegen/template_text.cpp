@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "codegen/template_text.hpp"
 
 #include "core/errors.hpp"

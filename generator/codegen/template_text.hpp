@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The whole template language of templates/: {{name}} substitutes a value; {{#list}}…{{/list}} repeats
 /// its block once per item of a list (an item sees its own values, then the enclosing ones). Nothing

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Output files appear whole or not at all: content goes to a temporary beside the target and is
 /// renamed over it (rename(2) is atomic within one file system).

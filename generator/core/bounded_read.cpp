@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "core/bounded_read.hpp"
 
 #include "core/errors.hpp"

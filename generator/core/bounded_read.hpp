@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Reading a user's file whole, with a size limit: every reader of user files (data, fit.json, headers,
 /// priors) goes through it, so a huge file, a device (/dev/zero) or a pipe cannot exhaust memory, and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Error types. Bad input and impossible options are exceptions that carry what a user needs to fix
 /// them (file, line, offending value); only `main` turns them into exit code 2 (1 for UnsafeModelError). Broken internal

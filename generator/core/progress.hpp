@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Progress on stderr for long work: a single self-overwriting status line when stderr is a
 /// terminal, nothing otherwise (or with --quiet). Thread-safe; throttled to a few updates a second.

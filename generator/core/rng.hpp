@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A small, fully specified random number generator: xoshiro256** (Blackman & Vigna 2018) seeded by
 /// splitmix64. Unlike std::uniform_real_distribution / std::normal_distribution, whose algorithms are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "core/sha256.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// SHA-256 of files and strings (OpenSSL libcrypto), lower-case hex; stamps every generated output.
 #pragma once

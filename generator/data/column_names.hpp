@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// What a column's header name and unit say (docs/reading-data.md, "Column names"): frequency,
 /// absorption, or one part (re, im, magnitude, phase) of an admittance, impedance or reflection

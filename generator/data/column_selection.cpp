@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "data/column_selection.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Which columns of a table hold the frequency and the two parts of the complex value, which
 /// quantity that value is, and in which units (docs/reading-data.md, "Choosing columns"): from

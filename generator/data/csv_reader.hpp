@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Reads a measured complex quantity from an exported table (CSV, ';' or tab separated, blanks; decimal
 /// point or comma; preamble, header and unit rows) and converts it to normalised admittance in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "data/csv_writer.hpp"
 
 #include "core/atomic_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Writes synthetic admittance as a CSV that `admitgen fit DATA` reads with its defaults (columns
 /// f,re,im; normalised admittance): `#` comment lines saying how the data were made (generator

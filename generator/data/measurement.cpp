@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "data/measurement.hpp"
 
 namespace admitgen {

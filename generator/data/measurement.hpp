@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Measured (or synthetic) normal-incidence surface admittance: what every command works on.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Locale-independent parsing of one decimal number (std::from_chars), accepting a leading '+' and,
 /// for exports from locales that write them, a decimal comma.

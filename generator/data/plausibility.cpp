@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "data/plausibility.hpp"
 
 #include "core/errors.hpp"

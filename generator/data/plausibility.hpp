@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Checks that catch a measurement read the wrong way before anything is fitted to it
 /// (docs/reading-data.md, "Plausibility checks"): SI values read as normalised (or the reverse),

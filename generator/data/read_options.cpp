@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "data/read_options.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// How to read a data file (docs/reading-data.md): the text layout (delimiter, decimal separator,
 /// lines to skip), which columns hold what (by position or by header name), which quantity they are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "data/text_table.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The layout of an exported table (docs/reading-data.md): delimiter and decimal separator (given or
 /// sniffed), quoted fields, the preamble of metadata lines, an optional header line of column names,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/diagnosis.hpp"
 
 #include "core/errors.hpp"

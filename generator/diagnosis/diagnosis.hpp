@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen diagnose` as a library: where the sim-to-real gap lies (gap_metrics), which pipeline
 /// stage adds it (stage_attribution, with a fit), which unmodelled effect causes it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/diagnosis_json.hpp"
 
 #include "core/version.hpp"

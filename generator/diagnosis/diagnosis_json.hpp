@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// diagnosis.json, schema "admitgen.diagnosis/1" (contract.md), with these extensions: "version",
 /// "input" and "settings" (sampler, likelihood, decision rule, the prior of every tried effect);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/effect_candidates.hpp"
 
 #include "physics/effects.hpp"

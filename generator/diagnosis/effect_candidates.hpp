@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The effects `diagnose` tries, each as a model of the measurement built on the simulated side:
 /// y_model(f; ϑ) = T_e[y_sim](f; ϑ), with ϑ free under a physically plausible prior. The contract

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/effect_identification.hpp"
 
 #include "core/rng.hpp"

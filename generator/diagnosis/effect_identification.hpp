@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Which unmodelled effect explains the gap: for every candidate e (effect_candidates.hpp) the
 /// evidence Z_e = ∫ L(ϑ) π(ϑ) dϑ of "simulated side + e" is computed with the nested sampler of `fit`

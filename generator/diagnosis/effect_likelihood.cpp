@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/effect_likelihood.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Likelihood of an effect model given the measured admittance: complex Gaussian noise of unknown
 /// std σ, scaled per point by the model's noise shape s_i (1 unless the model is heteroscedastic

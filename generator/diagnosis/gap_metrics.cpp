@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/gap_metrics.hpp"
 
 #include "core/errors.hpp"

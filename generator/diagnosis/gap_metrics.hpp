@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Where the sim-to-real gap lies. With the residual r_i = y_real,i − y_sim,i over N points and the
 /// level of the measurement ‖y‖ = (Σ_i |y_real,i|²/N)^{1/2}:

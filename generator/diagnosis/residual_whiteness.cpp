@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/residual_whiteness.hpp"
 
 #include "core/errors.hpp"

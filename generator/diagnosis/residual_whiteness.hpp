@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Is structure left in a residual r_i = y_real(f_i) − y_model(f_i) along frequency? Under white noise
 /// (independent points, Re and Im independent with equal variance) the lag-1 autocorrelation

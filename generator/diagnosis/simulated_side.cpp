@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/simulated_side.hpp"
 
 #include "core/errors.hpp"

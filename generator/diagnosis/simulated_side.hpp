@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The simulated admittance `diagnose` compares with the measurement, as a function of frequency:
 /// a CSV of simulated admittance (interpolated), a material SPEC, or the multipole of a fit.json.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/stage_attribution.hpp"
 
 #include "codegen/emission.hpp"

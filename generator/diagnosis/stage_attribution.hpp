@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// How much of the gap each pipeline stage adds (physics.md §5.2 n-q), with `--fit FIT.json --fs HZ
 /// --format F`. The chain of admittances, each evaluated at the measurement's frequencies:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/third_octave_bands.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// One-third-octave bands with the IEC 61260-1 base-10 mid-band frequencies:
 ///   f_m = 1000 · 10^{x/10} Hz (x integer),  f_lo = f_m · 10^{−1/20},  f_hi = f_m · 10^{+1/20},

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "diagnosis/verdict.hpp"
 
 #include <fmt/format.h>

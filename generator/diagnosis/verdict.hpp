@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The decision rule of `diagnose`, stated once:
 ///

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "emit/emit.hpp"
 
 #include "checks/check_suite.hpp"

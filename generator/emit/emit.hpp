@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen emit` as a library call, with its safety rule (docs/passivity.md):
 ///

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/likelihood.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Likelihood of a multipole model given complex admittance data, with the noise variance
 /// marginalised under a Jeffreys prior (method.md; paper eq. 10-11):

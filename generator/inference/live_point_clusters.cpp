@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/live_point_clusters.hpp"
 
 #include <Eigen/Cholesky>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Clusters of live points, each with its own whitening axes, so that slice directions stay local to
 /// a mode when the live set splits into several (mirror modes of an unreduced prior, competing pole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/nested_sampler.hpp"
 
 #include "core/errors.hpp"

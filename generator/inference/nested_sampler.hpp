@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Nested sampling (Skilling 2006) with a constrained step by slice sampling along random directions
 /// whitened by the live points' covariance (as PolyChord, Handley et al. 2015, and dynesty's

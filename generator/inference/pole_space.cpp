@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/pole_space.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The pole coordinates of an order, sampled when the residues are integrated out analytically
 /// (docs/method.md, "Sampling the poles only"). ψ = (λ_1, …, λ_Q, α_1, β_1, …, α_S, β_S), Q + 2S

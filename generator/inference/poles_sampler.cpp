@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/poles_sampler.hpp"
 
 #include "core/rng.hpp"

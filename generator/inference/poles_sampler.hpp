@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Nested sampling over the poles only, the residues integrated out analytically
 /// (inference/residue_marginal.hpp; docs/method.md, "Sampling the poles only"), then the complete

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/posterior.hpp"
 
 #include "core/errors.hpp"

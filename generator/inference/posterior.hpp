@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Posterior summaries from a nested-sampling run: weights p_i = L_i ΔX_i / Z, weighted moments,
 /// weighted quantiles, and deterministic equal-weight resampling for predictive bands.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/priors.hpp"
 
 #include "core/bounded_read.hpp"

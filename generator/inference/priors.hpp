@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Uniform priors per parameter family (method.md, paper Table 1) and the unit-cube transform that
 /// nested sampling draws through, optionally in the symmetry-reduced space.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/residue_draws.hpp"
 
 #include "inference/student_t.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Draws of the residues r from their conditional posterior given the poles: the multivariate Student
 /// t of inference/residue_marginal.hpp truncated to the residue box (docs/method.md, "The complete

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/residue_marginal.hpp"
 
 #include "core/errors.hpp"

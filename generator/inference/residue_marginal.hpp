@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The likelihood of the poles alone, the residues integrated out analytically (docs/method.md,
 /// "Residues given the poles", which derives every formula here).

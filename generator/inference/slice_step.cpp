@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/slice_step.hpp"
 
 #include "core/errors.hpp"

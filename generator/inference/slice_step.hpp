@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The constrained-prior step of nested sampling: a short chain of 1-D slice-sampling moves (Neal 2003,
 /// stepping out and shrinkage) inside {u ∈ [0,1]^d : L(θ(u)) > L*}, along random directions drawn

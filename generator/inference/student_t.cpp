@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "inference/student_t.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The Student-t pieces the residue marginalisation needs (docs/method.md, "Residues given the
 /// poles"): tails of the univariate t, chi-square draws, and draws of a univariate t truncated to an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "model/multipole.hpp"
 
 #include "core/errors.hpp"

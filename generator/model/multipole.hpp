@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Evaluation of the multipole admittance (method.md; paper eq. 2-3), e^{+jωt}:
 ///   G(ω) = G∞ + Σ_q A_q/(λ_q + jω) + Σ_s [Θ_s/(θ_s + jω) + Θ_s*/(θ_s* + jω)],

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "model/order.hpp"
 
 #include "core/errors.hpp"

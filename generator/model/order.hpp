@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A multipole model order "QxSy" and the one packing of its parameter vector, used by inference,
 /// reports, codegen and diagnosis alike (never re-derive the packing elsewhere).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "model/residue_basis.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The multipole model is linear in its residues once the poles are fixed (docs/method.md, "Residues
 /// given the poles"). With r = (G∞, A_1, …, A_Q, B_1, C_1, …, B_S, C_S) (1 + Q + 2S numbers),

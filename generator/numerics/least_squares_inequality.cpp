@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "numerics/least_squares_inequality.hpp"
 
 #include "core/errors.hpp"

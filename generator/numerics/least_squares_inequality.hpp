@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Linear least squares with linear inequality constraints (LSI), the small convex QPs that passivity
 /// enforcement solves (docs/passivity.md):

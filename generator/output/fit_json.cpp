@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "output/fit_json.hpp"
 
 #include "core/version.hpp"

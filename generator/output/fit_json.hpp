@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// fit.json, schema "admitgen.fit/1" (contract.md), with these extensions: per-model parameter
 /// summaries, Bayes-factor errors, the read options, and the selected order's predictive band.

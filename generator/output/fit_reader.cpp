@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "output/fit_reader.hpp"
 
 #include "core/bounded_read.hpp"

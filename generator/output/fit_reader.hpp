@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Reads a fit.json written by `admitgen fit` (shared by `emit` and `diagnose`).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "passivity/passive_estimate.hpp"
 
 #include "checks/passivity.hpp"

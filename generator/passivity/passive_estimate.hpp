@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The passive estimate of a fitted order (docs/passivity.md, "Passive estimate"). For each of the
 /// highest-likelihood posterior samples (kCandidates of them), keep its poles and take the residues that

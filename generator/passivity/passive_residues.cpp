@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "passivity/passive_residues.hpp"
 
 #include "core/errors.hpp"

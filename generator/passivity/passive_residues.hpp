@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The passive multipole closest to a target, for fixed poles (docs/passivity.md).
 ///

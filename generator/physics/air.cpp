@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/air.hpp"
 
 #include "core/errors.hpp"

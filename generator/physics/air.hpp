@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Air as the fluid inside the tube, the pores and the cavities: the constants every material model
 /// and the two-microphone chain read. One struct, so a test can pin the constants a paper used.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/effects.hpp"
 
 #include "core/errors.hpp"

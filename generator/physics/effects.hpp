@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The measurement and mounting effects of contract.md ("Effects: one vocabulary for `synth --effect`
 /// and `diagnose`"), by their contract names and parameters, written `NAME` or `NAME:k=v,k=v`:

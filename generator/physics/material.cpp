@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/material.hpp"
 
 #include "physics/overloaded.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A material under test, as `synth` and `diagnose` see it: either a physical layered absorber over a
 /// rigid backing, or a surface given directly by a multipole admittance. Built by parse_material_spec

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/material_spec.hpp"
 
 #include "core/bounded_read.hpp"

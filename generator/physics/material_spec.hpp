@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The material SPEC of `admitgen synth --material` and `diagnose --sim`: a readable one-line
 /// description of a layered absorber or a multipole surface. Grammar (blanks allowed between tokens):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/micro_perforated.hpp"
 
 #include <cmath>

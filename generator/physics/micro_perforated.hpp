@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Maa's micro-perforated panel (MPP): the series impedance of a thin panel with sub-millimetre holes,
 /// placed in a transfer-matrix stack in front of an air cavity (Maa, "Potential of microperforated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/multipole_surface.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A surface given directly by a multipole admittance (method.md eq. 2), from explicit parameters or
 /// from a `fit.json` written by `admitgen fit`. Evaluated by model/multipole.hpp; the packing of θ is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/noise.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Measurement noise for synthetic data (contract.md): complex Gaussian of std σ, E|n|² = σ², i.e.
 /// σ²/2 on each of Re and Im, either the same at every frequency or heteroscedastic the way the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The usual visitor helper for std::visit over the physics variants (materials, layers, effects):
 /// std::visit(Overloaded{[](const A&) {…}, [](const B&) {…}}, v). A missing alternative does not compile.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/parameter_list.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The "key=value, key=value" lists inside a material SPEC (`miki(sigma=10000, d=50mm)`) and an
 /// effect (`edge_gap:width_m=0.5mm,depth_m=0.05`), read the same way: every key at most once, every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/porous_models.hpp"
 
 #include <cmath>

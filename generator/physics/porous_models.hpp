@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Rigid-frame porous media as equivalent fluids: the characteristic impedance Z_c and complex
 /// wavenumber k_c of a porous layer, in the e^{+jωt} convention (k_c = k' − jk'', k'' > 0: waves

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/synthetic_measurement.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A synthetic "measured" admittance: material → sample effects → measurement chain → noise, the
 /// pipeline behind `admitgen synth` (and `diagnose --sim SPEC`). Order of application, whatever the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/transfer_matrix.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Layered absorbers over a rigid backing by transfer matrices (Allard & Atalla, "Propagation of
 /// Sound in Porous Media", 2nd ed., ch. 11), e^{+jωt}. Each layer maps pressure and normal velocity

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "physics/two_microphone.hpp"
 
 #include "core/errors.hpp"

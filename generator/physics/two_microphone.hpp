@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The ISO 10534-2 two-microphone transfer-function method, both ways, in the e^{+jωt} convention of
 /// contract.md. x is the distance from the sample face; mic 1 (far) at x1, mic 2 (near) at x2 = x1 − s:

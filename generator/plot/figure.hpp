@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A small SVG chart: one plot area with x and y axes (linear, log or categorical), series of lines,
 /// markers, shaded bands, error bars and bars, and a legend above the plot area.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "plot/format.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Deterministic text for SVG and HTML: numbers print the same bytes on every platform and locale
 /// (fmt never consults the C locale), so equal inputs give byte-identical reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "plot/scale.hpp"
 
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Axis scales: a map from data values to pixels, and the tick positions and labels that go with it.
 /// Linear ticks sit on the 1-2-2.5-5 × 10^k grid (Heckbert, "Nice numbers for graph labels",

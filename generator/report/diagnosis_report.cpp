@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "report/diagnosis_report.hpp"
 
 #include "core/atomic_file.hpp"

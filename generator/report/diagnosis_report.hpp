@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// diagnosis.html of `admitgen diagnose`, built from diagnosis.json (schema admitgen.diagnosis/1) alone,
 /// so a saved diagnosis can be rendered again: the verdict in one sentence, the gap per one-third-octave

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "report/fit_report.hpp"
 
 #include "core/atomic_file.hpp"

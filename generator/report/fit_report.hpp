@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// report.html of `admitgen fit`: what an acoustician looks at to judge a fit. Built from fit.json
 /// (schema admitgen.fit/1, as output/fit_json.hpp writes it) and the measured data, so the same page

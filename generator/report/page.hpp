@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The HTML around the reports: one self-contained page (inline CSS and SVG, no script, no font, no
 /// network), styled with CSS variables so it reads on light and dark backgrounds and prints on white.

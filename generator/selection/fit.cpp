@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "selection/fit.hpp"
 
 #include "checks/passivity.hpp"

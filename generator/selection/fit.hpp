@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Order selection over the grid Q ∈ [0, qmax] × S ∈ [0, smax]: one nested-sampling run per order
 /// (in parallel over orders, each order with its own seed stream so results do not depend on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "selection/fit_cost.hpp"
 
 #include <fmt/format.h>

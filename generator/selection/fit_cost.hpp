@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// What a fit will cost, stated before it starts (`admitgen fit` prints it; `--cost-only` stops there).
 /// Nested sampling replaces each dead point with a slice walk of (3 + dim) one-dimensional slices, and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "selection/goodness_of_fit.hpp"
 
 #include "inference/posterior.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// How well one order's fit reproduces the data, in the terms scikit-rf and vector fitting report:
 /// the relative RMS residual of the complex admittance and the largest absorption error. Both are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "selection/selection_rule.hpp"
 
 #include "core/errors.hpp"

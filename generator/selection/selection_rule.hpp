@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// How an order is chosen from the evidence grid (method.md, "Model selection"):
 ///   best         the highest ln Z;

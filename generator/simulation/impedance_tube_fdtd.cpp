@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "simulation/impedance_tube_fdtd.hpp"
 
 #include "admitgen_rt.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A 1D FDTD impedance tube terminated by the emitted C runtime, "measured" with two virtual
 /// microphones and processed with the ISO 10534-2 two-microphone method (physics/two_microphone):

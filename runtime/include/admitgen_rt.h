@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt.h - recursive-convolution runtime for admitgen multipole boundary filters.
  * C99, freestanding-friendly: <stddef.h> and <stdint.h> only; no heap, no libm, no globals, reentrant.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_avx2.c - x86-64 vector kernels, compiled for AVX2 (and AVX-512 F+VL) by target pragmas, one
  * section each (the rest of the library stays baseline x86-64), chosen at run time by

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_common.c - result descriptions and the state-memory layout shared by every format.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_fixed.c - the scalar fixed-point kernel shared by q31 and q15 (the reference every vector
  * kernel must match bit for bit, and the path for 32-bit MCUs), and the dispatch between paths.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_init_f32.c - state size, init, reinit (coefficient swap) and reset of the f32 instance.
  *

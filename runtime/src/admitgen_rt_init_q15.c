@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_init_q15.c - state size, init, reinit (coefficient swap) and reset of the q15 instance.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_init_q31.c - state size, init, reinit (coefficient swap) and reset of the q31 instance.
  *

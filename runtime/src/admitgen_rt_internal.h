@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_internal.h - private helpers shared by the runtime kernels (not installed).
  * Fixed-point primitives and the per-term node loops used by both the q31 and the q15 kernels.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_neon.c - aarch64 NEON fixed-point kernel (NEON is mandatory on aarch64: no dispatch).
  *

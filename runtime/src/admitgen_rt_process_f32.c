@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_process_f32.c - float kernel: small-n path, dispatch of the fused frame pass, FDTD
  * history/commit.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_process_q15.c - q15 entry points: block processing, FDTD history/commit (kernel in
  * admitgen_rt_fixed.c and the vector kernels).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * admitgen_rt_qblock_x86.h - the x86 fixed-point block (vectors of 4 int64 lanes), included by
  * admitgen_rt_avx2.c once per instruction set. The includer defines ADMITGEN_RT_VH (vectors per block),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Downstream use of a generated boundary filter: instantaneous gain, impulse response, band table. */
 #define WALL_REQUIRE_FS_HZ 48000 /* compile error if wall.h has no 48 kHz coefficients */
 #include "wall.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * engine_example.c - an audio engine's view of a wall filter. A 1 s interleaved stereo buffer of a
  * 1 kHz tone (left) and white noise (right) at 48 kHz is pushed through the wall admittance in blocks of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * tube_fdtd.c - 1D tube FDTD with an admitgen boundary filter (runtime f32, implicit history/commit
  * coupling): bounded energy with a passive filter, growth with a deliberately non-passive one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The catalogue of deliberately broken filters (each flagged with the right named failure) and good
 // filters that pass every check (checks/check_suite.hpp).
 #include "checks/check_suite.hpp"

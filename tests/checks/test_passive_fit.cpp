@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // --passive: the prior truncated to passive models (selection/fit.cpp, inference/nested_sampler.cpp).
 #include "checks/passivity.hpp"
 #include "data/csv_reader.hpp"

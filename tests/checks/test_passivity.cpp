@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Exact (Hamiltonian) passivity test against dense frequency scans (checks/passivity.hpp).
 #include "checks/passivity.hpp"
 #include "core/rng.hpp"

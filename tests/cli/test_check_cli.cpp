@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `admitgen check` and the emit refusal, end to end (exit codes of contract.md).
 #include "test_support.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `admitgen check` on a catalogue of deliberately broken files, end to end: every file that parses is checked
 // and exits 1 naming the failing check (and, for causality, the offending parameter); every file that
 // cannot be read exits 2. emit refuses the same non-causal fits with the same named reason.

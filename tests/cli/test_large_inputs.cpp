@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Large inputs: a 10^6-line data file is refused with the limit named (before it is split, so memory stays
 // bounded: data/csv_reader.hpp), and a fit states its cost before it starts (selection/fit_cost.hpp).
 #include "core/errors.hpp"

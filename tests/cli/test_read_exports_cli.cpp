@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading real exports through `admitgen fit`: the export catalogue end to end (exit 2, the
 // documented message and nothing written for the bad ones), the two readings that used to succeed
 // silently, no output directory left behind, and the goodness of fit in fit.json, summary and report.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // End-to-end `admitgen synth`: the CSV reads back through `fit`'s reader bit for bit, its comments carry
 // the provenance, and bad input exits 2 with a message and leaves no file behind.
 #include "data/csv_reader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Quantisation (codegen/coefficients.hpp): per-term exponents, output scaling, the bit-exact integer model.
 #include "codegen/coefficients.hpp"
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Discretisation (codegen/discrete_model.hpp): PLRC baseline against physics.md §1.3, the refit, folding,
 // the realisation's internal consistency.
 #include "codegen/discrete_model.hpp"

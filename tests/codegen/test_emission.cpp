@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Header generation (codegen/emission.hpp, template_text.hpp, band_absorption.hpp) and `admitgen emit`.
 #include "codegen/band_absorption.hpp"
 #include "codegen/emission.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// A catalogue of realistic exports of one measurement, written by the tests themselves: the ways
 /// spreadsheets and impedance-tube software write a table (docs/reading-data.md). Each entry either

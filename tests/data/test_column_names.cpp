@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Header-name matching and table layout (docs/reading-data.md, "Column names", "Layout and
 // sniffing"): what each spelling tool exports reduces to, and where header, unit rows and data are.
 #include "core/errors.hpp"

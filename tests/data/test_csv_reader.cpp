@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Reading measured data (contract.md "Input data"): formats, conversions, band selection.
 #include "core/errors.hpp"
 #include "data/csv_reader.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The export catalogue (tests/data/export_catalogue.hpp) read in-process: every entry reads to the
 // reference admittance of the plain file, or fails with its documented message.
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Detection limit of each effect at the suite's noise (σ = 0.003, 120 points 100-2000 Hz, porous base
 // miki(sigma=10000, d=50mm), reference tube): the smallest size on a ladder from which every larger
 // size is identified (top-1 verdict) for each of three noise seeds. Several minutes of sampling, so it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Gap metrics, one-third-octave bands, residual whiteness, the effect likelihood and the verdict rule.
 #include "diagnosis/effect_likelihood.hpp"
 #include "diagnosis/gap_metrics.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The simulation stage (issue 6): a 1D FDTD impedance tube terminated by the C runtime, measured with
 // two virtual microphones and the ISO 10534-2 processing (simulation/impedance_tube_fdtd.hpp).
 #include "codegen/coefficients.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Stage attribution (issue 6, "Show it" 2): a deliberately coarse setup is blamed on the right stage,
 // and a good setup shows every downstream stage negligible next to the fit.
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The diagnosis validation suite (issue 6, "Show it" 1): generated cases of every contract effect at a
 // clear and a marginal size on three base materials, plus clean controls; `diagnose` is never told the
 // effect. Prints the confusion matrix; asserts top-1 accuracy ≥ 90 % on the clear sizes, `none` on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// The generated cases of the diagnosis validation suite: a base material, an effect at a size, the
 /// tube, realistic noise; `run_case` synthesises the "real" data with physics/synthetic_measurement

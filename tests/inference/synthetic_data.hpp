@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Small synthetic data sets for sampler tests: a known multipole model at log-spaced frequencies
 /// plus complex Gaussian noise of std σ (σ²/2 per component), from a recorded seed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The prior transform: ranges, ordering in the reduced space, and the order-statistics density.
 #include "core/errors.hpp"
 #include "core/rng.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The residue-marginal likelihood (inference/residue_marginal.hpp, docs/method.md "Residues given the
 // poles") against independent references: the basis against model/residue_basis.hpp, and the closed
 // form of (1/V_r) ∫_box L dr against a direct Gauss-Legendre quadrature of the full likelihood over r.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Tests 2 and 3 of the foundations issue, in the doctest suite "statistical" (many sampler runs;
 // left out of the sanitizer job). Sizes and seeds are chosen so each case is decisive and takes a
 // few seconds.

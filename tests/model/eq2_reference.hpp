@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Paper eq. 2 written term by term with std::complex: the independent reference the model's vectorised
 /// evaluation and its residue basis are tested against.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The vectorised multipole evaluation against two independent forms of the same model.
 #include "core/errors.hpp"
 #include "core/rng.hpp"

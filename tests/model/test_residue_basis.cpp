@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The residue basis (model/residue_basis.hpp) against paper eq. 2 written term by term.
 #include "core/rng.hpp"
 #include "model/eq2_reference.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Lawson–Hanson LSI/NNLS (numerics/least_squares_inequality.hpp) against brute force: the optimum of a
 // strictly convex QP is the equality-constrained least-squares solution of its active set, so the best
 // feasible solution over all active sets (2^m of them, m ≤ 8) is an independent reference.

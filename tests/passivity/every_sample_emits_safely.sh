@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every data file in samples/ through the main path with defaults: admitgen fit (100 live points) ->
 # admitgen emit at 44.1, 48 and 96 kHz in f32, q31 and q15 (default estimate: passive) -> exit 0, and
 # admitgen check passes on every header written. docs/passivity.md describes what makes this hold.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Passivity by construction (docs/passivity.md): the continuous passive refit and the passive estimate.
 // References: the exact Hamiltonian test (checks/passivity.hpp) certifies; the change reported is recomputed
 // here from the two models; the residual of the passive estimate is compared with the unconstrained best.

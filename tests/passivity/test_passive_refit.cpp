@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The discrete refit under Re H ≥ 0 up to Nyquist (codegen/discrete_model.hpp, docs/passivity.md), certified
 // by the discrete Hamiltonian test (checks/passivity.hpp), and the emit pipeline built on it (emit/emit.hpp).
 #include "checks/passivity.hpp"

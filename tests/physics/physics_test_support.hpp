@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 /// @file
 /// Shared fixtures of the physics tests: the air constants materials.md used for its derived numbers,
 /// and small helpers on spectra.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Effects of contract.md: parsing by contract name and parameters, and the sample effects' closed forms
 // (frame_resonance, fractional_order, edge_gap, air_gap) against exact values and physics.md §5.1 sizes.
 #include "core/errors.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Physics sanity over random layered specs (fixed seed, 300 stacks of 1-4 layers drawn from every
 // layer type with parameters in physically meaningful ranges): passivity Re z ≥ 0, 0 ≤ α ≤ 1, and the
 // rigid-backed low-frequency limit y → 0, linearly in ω.

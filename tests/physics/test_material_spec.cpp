@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The material SPEC grammar (physics/material_spec.hpp): what parses to what, and what is rejected.
 #include "core/errors.hpp"
 #include "model/multipole.hpp"

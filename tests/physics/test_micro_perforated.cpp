@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Maa's micro-perforated panel over an air cavity, built by the transfer-matrix stack
 // mpp(...) + air(D), against Maa's closed form and the derived table of materials.md §2.4.
 #include "physics/micro_perforated.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Porous equivalent-fluid models against the published and independently derived values of
 // materials.md §2.1-2.3 (air constants as materials.md states them: ρ0 = 1.213, c0 = 343, ...).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The ISO 10534-2 chain R → H12 → R, and each chain effect of contract.md against its first-order
 // closed form (physics.md §5.1 a-d, m), derived here independently of the chain code:
 //   ∂y/∂R = −2/(1 + R)²,  ∂R/∂H = (H_R − H_I) e^{2jkx1}/(H_R − H)²,  p(x) = e^{jkx} + R e^{−jkx},

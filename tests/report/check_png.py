@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Checks that a PNG screenshot is not blank, with the standard library only.
 
 Usage: check_png.py FILE.png WIDTH

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Renders report.html (from a small fit of the bundled reference data) and diagnosis.html (from the
 # bundled diagnosis sample) in headless Chromium, and checks that each page loads without console or
 # network errors and that the screenshot is not blank. Exit 77 (CTest skip) without chromium.

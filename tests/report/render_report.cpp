@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Test tool: renders a report page from saved JSON, for the headless-browser test and the README
 // screenshots. Usage:
 //   admitgen_render_report diagnosis DIAGNOSIS.json OUT_DIR      writes OUT_DIR/diagnosis.html

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The plotting module and the HTML reports: every generated SVG parses as XML (libxml2), each figure
 // holds the series it should (data, model, band; before/after; stages) with finite coordinates, the
 // pages are well-formed, self-contained and deterministic, and the CLI writes them.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -DCC=<c compiler> -DINCLUDES="<dir>;<dir>" -DHEADER=<generated header> -DDEFINE=<macro=value>
 #       -DMUTATE_FROM=<text> -DMUTATE_TO=<text> -DEXPECT=<regex> -DWORK=<dir> -P expect_compile_error.cmake
 # Compiles a one-line C file including HEADER (optionally a copy with MUTATE_FROM replaced by MUTATE_TO,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -DADMITGEN=<exe> -DARGS="emit;...;--out;@OUT@" [-DOUTNAME=<file name>] [-DEXPECTED=<file>] -DWORK=<dir>
 #       -P expect_same_output.cmake
 # Runs admitgen twice (@OUT@ = WORK/run1/OUTNAME, then WORK/run2/OUTNAME: same file name, since the

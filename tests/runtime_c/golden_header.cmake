@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Writes the committed golden vectors (golden/wall_<fmt>_48000.txt: "input output # hex" per sample) as a C
 # header of arrays, so the bit-exactness test runs on targets without a file system (Cortex-M under QEMU).
 # Usage: admitgen_golden_header(<output header> <q31 file> <q15 file>)

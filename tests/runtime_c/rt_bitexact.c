@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_bitexact.c - the runtime's portable proof, run on the host and, cross-compiled, on aarch64, armhf and
  * Cortex-M4 under QEMU (tests/runtime_c/cross/). No file system, no libm, no heap: golden vectors are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_bitexact_checks.h - the checks of rt_bitexact.c, included once per format. The includer defines FMT
  * (f32, q31 or q15), T (the sample type), MODEL (the emitted model), INPUT(k) (golden input sample k as a T),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_check.h - the check macro of the C runtime tests: counts failures and prints where and why.
  */

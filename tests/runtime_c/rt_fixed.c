@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_fixed.c - the emitted q31 (RT_Q31) or q15 (RT_Q15) header + runtime, compiled by the C compiler:
  *  1. bit-exact golden vectors (committed file; input from a recorded seed, expected output exact);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_misuse.c - the runtime at its limits (docs/runtime.md, "Limits and misuse"): every misuse of the API
  * returns its documented result code and writes nothing; float NaN/Inf input propagates into its own node

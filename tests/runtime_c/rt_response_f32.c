@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_response_f32.c - the emitted f32 header + runtime, compiled by the C compiler and run:
  *  1. frequency response measured from the running filter's impulse response (DTFT) against the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_test_util.h - helpers of the C runtime tests: the check macro (rt_check.h), the same
  * xoshiro256** generator as generator/core/rng.hpp (seeded by splitmix64), aligned static memory.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The C99 runtime and a generated header of every format compiled as C++ (unity build of the runtime
 // sources) with the strict warning set: engines written in C++ include them directly.
 #include "../../runtime/src/admitgen_rt_avx2.c"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # CTest driver: install admitgen into a scratch prefix, then configure, build and run the two sample
 # integrations exactly as a downstream user would (find_package(admitgen) + admitgen_add_boundary).
 # Invoked with -DSOURCE_DIR=... -DBINARY_DIR=... -DWORK_DIR=...

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Test 5 of the foundations issue: every real Basotect measurement (TU Berlin, samples/basotect_tuberlin)
 // fits end to end over the Q0-3 × S0-3 grid, and the selected order explains the data.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pole sampler (residues integrated analytically, inference/poles_sampler.hpp) against the full
 // sampler, in the doctest suite "statistical" (sampler runs). Tolerance: 3 combined standard errors
 // √(e_poles² + e_full²), a 99.7 % band for two independent estimates. Sizes: 300 live points, seed 1

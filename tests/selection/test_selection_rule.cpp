@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Selection rules and Bayes factors in deciban.
 #include "core/errors.hpp"
 #include "selection/fit.hpp"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cross_common.cmake - building and running the C runtime on other architectures with Debian's cross
 # toolchains and QEMU (docs/runtime.md, "Cross-architecture proof"). Included by run_cross_test.cmake and
 # cross_figures.cmake (cmake -P scripts). Targets:

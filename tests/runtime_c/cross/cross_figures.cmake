@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cross_figures.cmake - per target: .text bytes of the runtime code a program of one format links, and the
 # instructions per node-sample QEMU executes, for 1 node (small-n path) and 64 nodes (block path). Printed,
 # not asserted (figures of docs/runtime.md; the bench target admitgen_rt_cross_figures runs this).

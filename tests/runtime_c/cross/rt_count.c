@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * rt_count.c - a fixed workload for counting instructions under QEMU (cross_figures.cmake): RT_FRAMES
  * frames of RT_NODES nodes of the emitted 48 kHz model in format RT_FORMAT (1 f32, 2 q31, 3 q15), the golden

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # run_cross_test.cmake - CTest driver: builds the runtime and tests/runtime_c/rt_bitexact.c (armhf: also rt_misuse.c) for one target
 # with its Debian cross toolchain and runs it under QEMU (cross_common.cmake). Passes when the program exits 0
 # and prints "PASS (0 failures)". Without the toolchain or QEMU it prints ADMITGEN_CROSS_SKIPPED (CTest marks
