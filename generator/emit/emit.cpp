@@ -132,6 +132,8 @@ std::string EmitResult::refusal(const std::string& out) const {
   std::string next;
   if (has("causality"))
     next = "the model has a pole with lambda or alpha <= 0: re-run admitgen fit (the default estimate is always causal)";
+  else if ((has("passivity_discrete") || has("passivity_continuous")) && !emission.settings.enforce_passivity)
+    next = "drop --no-passivity-enforcement: emit then makes the model and the refit passive";
   else if (has("passivity_discrete") || has("passivity_continuous"))
     next = "the passive refit could not be certified at this rate and format: try a higher --fs, --format f32, "
            "or --fir-taps 1..8; `admitgen check` on the written header shows the bands";
