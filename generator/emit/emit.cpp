@@ -24,19 +24,6 @@ constexpr double kMargins[] = {1e-9, 1e-6, 1e-5, 1e-4, 1e-3};
 
 std::string hz(double f) { return std::isinf(f) ? "infinity" : fmt::format("{:.4g} Hz", f); }
 
-/// Frequencies (Hz) to add as constraints for each negative band of a discrete filter: its minimum and
-/// 9 points spanning the band (edges included), so one round covers the whole band.
-std::vector<double> violations(const codegen::DiscreteModel& m) {
-  const auto r = checks::discrete_passivity(m, false);
-  std::vector<double> f;
-  for (const auto& b : r.bands) {
-    const double hi = std::min(b.hi, 0.5 * m.fs_hz);
-    f.push_back(std::min(b.at, 0.5 * m.fs_hz));
-    for (int i = 0; i <= 8; ++i) f.push_back(b.lo + (hi - b.lo) * i / 8.0);
-  }
-  return f;
-}
-
 /// max |ΔG|/|G| over frequencies f (Hz).
 double max_relative_change(const Order& order, const Eigen::VectorXd& before, const Eigen::VectorXd& after,
                            const Eigen::ArrayXd& f_hz) {
@@ -51,6 +38,17 @@ bool discrete_passivity_failed(const checks::CheckReport& report) {
 }
 
 }  // namespace
+
+std::vector<double> discrete_passivity_violations(const codegen::DiscreteModel& m) {
+  const auto r = checks::discrete_passivity(m, false);
+  std::vector<double> f;
+  for (const auto& b : r.bands) {
+    const double hi = std::min(b.hi, 0.5 * m.fs_hz);
+    f.push_back(std::min(b.at, 0.5 * m.fs_hz));
+    for (int i = 0; i <= 8; ++i) f.push_back(b.lo + (hi - b.lo) * i / 8.0);
+  }
+  return f;
+}
 
 void enforce_continuous_passivity(codegen::EmissionSource& source) {
   const Order& order = source.surface.order;
@@ -107,7 +105,7 @@ EmitResult emit(const nlohmann::json& fit, const std::string& fit_path, codegen:
   }
   if (settings.enforce_passivity) {
     enforce_continuous_passivity(source);
-    settings.passivity_violations = violations;
+    settings.passivity_violations = discrete_passivity_violations;
   } else {
     source.notes.push_back("emitted without passivity enforcement (--no-passivity-enforcement)");
   }

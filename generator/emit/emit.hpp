@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace admitgen::emit {
 
@@ -33,6 +34,10 @@ struct EmitResult {
 /// Everything `admitgen emit` computes, before anything is written. Throws InputError on bad input.
 EmitResult emit(const nlohmann::json& fit, const std::string& fit_path, codegen::EmitSettings settings,
                 const std::string& template_text, const std::string& header_file_name);
+
+/// Step 2's certifier (what the discrete refit is given): for each band of the filter where Re H < 0
+/// (discrete Hamiltonian test), its minimum and 9 points spanning it, in Hz; empty when passive up to Nyquist.
+std::vector<double> discrete_passivity_violations(const codegen::DiscreteModel& model);
 
 /// Step 1 alone: makes `source.surface` passive if it is not, recording the change in source.notes and
 /// source.enforcement (unchanged and no note when it already is passive).

@@ -24,6 +24,22 @@ Eigen::MatrixXd random_matrix(Rng& rng, Eigen::Index r, Eigen::Index c) {
   return m;
 }
 
+/// A random LSI problem with p unknowns, m constraints and p + 4 rows; h = G x0 − 0.2 for a random x0,
+/// so x0 is feasible and the unconstrained optimum usually is not (active constraints at the optimum).
+struct Problem {
+  Eigen::MatrixXd e, g;
+  Eigen::VectorXd f, h;
+};
+Problem random_problem(Rng& rng, Eigen::Index p, Eigen::Index m) {
+  Problem q;
+  q.e = random_matrix(rng, p + 4, p);
+  q.g = random_matrix(rng, m, p);
+  q.f = random_matrix(rng, p + 4, 1);
+  const Eigen::VectorXd x0 = random_matrix(rng, p, 1);
+  q.h = q.g * x0 - 0.2 * Eigen::VectorXd::Ones(m);
+  return q;
+}
+
 /// min ‖E x − f‖² s.t. G x ≥ h by enumerating active sets (KKT system of each equality problem).
 Eigen::VectorXd brute_force(const Eigen::MatrixXd& e, const Eigen::VectorXd& f, const Eigen::MatrixXd& g,
                             const Eigen::VectorXd& h, int& active_at_optimum) {
@@ -61,11 +77,7 @@ TEST_CASE("LSI: Lawson-Hanson equals brute-force active-set enumeration on 40 ra
   Rng rng(1974);
   int with_active = 0;
   for (int trial = 0; trial < 40; ++trial) {
-    const Eigen::Index p = 2 + trial % 4, m = 3 + trial % 6, rows = p + 4;
-    const Eigen::MatrixXd e = random_matrix(rng, rows, p), g = random_matrix(rng, m, p);
-    const Eigen::VectorXd f = random_matrix(rng, rows, 1), x0 = random_matrix(rng, p, 1);
-    // h = G x0 − margin: x0 is feasible, and the unconstrained optimum usually is not.
-    const Eigen::VectorXd h = g * x0 - 0.2 * Eigen::VectorXd::Ones(m);
+    const auto [e, g, f, h] = random_problem(rng, 2 + trial % 4, 3 + trial % 6);
     int active = 0;
     const Eigen::VectorXd ref = brute_force(e, f, g, h, active);
     const auto sol = least_squares_inequality(e, f, g, h);
@@ -109,10 +121,8 @@ TEST_CASE("LSI: degenerate constraint sets (each row repeated, with rounding-lev
   // can cycle. Each row appears three times (exactly, and scaled by 1 ± 1e-15); the optimum is unchanged.
   Rng rng(23);
   for (int trial = 0; trial < 20; ++trial) {
-    const Eigen::Index p = 3 + trial % 3, m = 4 + trial % 4, rows = p + 4;
-    const Eigen::MatrixXd e = random_matrix(rng, rows, p), g = random_matrix(rng, m, p);
-    const Eigen::VectorXd f = random_matrix(rng, rows, 1), x0 = random_matrix(rng, p, 1);
-    const Eigen::VectorXd h = g * x0 - 0.2 * Eigen::VectorXd::Ones(m);
+    const auto [e, g, f, h] = random_problem(rng, 3 + trial % 3, 4 + trial % 4);
+    const Eigen::Index p = e.cols(), m = g.rows();
     int active = 0;
     const Eigen::VectorXd ref = brute_force(e, f, g, h, active);
     Eigen::MatrixXd g3(3 * m, p);
