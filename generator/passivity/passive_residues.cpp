@@ -5,7 +5,6 @@
 #include "model/residue_basis.hpp"
 #include "numerics/least_squares_inequality.hpp"
 
-#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
@@ -70,14 +69,6 @@ void add_violations(const checks::PassivityResult& r, std::vector<double>& omega
 }
 
 }  // namespace
-
-Eigen::VectorXd least_squares_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
-  Eigen::MatrixXd e;
-  Eigen::VectorXd f;
-  weighted_system(order, theta, target, e, f);
-  const Eigen::VectorXd d = e.colwise().norm().transpose().cwiseMax(1e-300).cwiseInverse();
-  return d.asDiagonal() * (e * d.asDiagonal()).colPivHouseholderQr().solve(f);
-}
 
 PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
   ADMITGEN_ENSURE(target.omega.size() == target.values.size() && target.omega.size() == target.weights.size(),

@@ -41,8 +41,4 @@ struct PassiveResidues {
 /// Requires every λ, α > 0. Not certified only if the rounds are exhausted (reported, never hidden).
 PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
 
-/// The unconstrained weighted least-squares residues for the same poles (the reference the passive
-/// solution is compared with).
-Eigen::VectorXd least_squares_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
-
 }  // namespace admitgen::passivity
