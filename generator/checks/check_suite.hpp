@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen check` as a library: what is checked (a header's machine-readable block and C tables, or a
-/// fit's continuous model) and the six checks of the issue plus the header's self-consistency:
+/// fit's continuous model) and the six safety checks plus the header's self-consistency:
 ///
 ///  causality             every λ_q, α_s > 0 (continuous poles in the left half-plane)
 ///  discrete_stability    every emitted, quantised pole |z| < 1, exactly (integer arithmetic for q31/q15)

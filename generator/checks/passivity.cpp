@@ -30,7 +30,7 @@ double dc_gain(const StateSpace& ss) {
   return ss.D - ss.C.dot(ss.A.partialPivLu().solve(ss.B));
 }
 
-/// Realisation of G(1/s): Ã = A⁻¹, B̃ = A⁻¹B, C̃ = −CA⁻¹, D̃ = G(0) (physics.md §2.3).
+/// Realisation of G(1/s): Ã = A⁻¹, B̃ = A⁻¹B, C̃ = −CA⁻¹, D̃ = G(0) (docs/physics.md §2.3).
 StateSpace reciprocal(const StateSpace& ss) {
   const Eigen::MatrixXd inv = ss.A.partialPivLu().inverse();
   StateSpace r;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Exact passivity (positive-realness) test of a stable rational admittance, physics.md §2.3:
+/// Exact passivity (positive-realness) test of a stable rational admittance, docs/physics.md §2.3:
 /// Re G(jω) ≥ 0 for every ω ≥ 0, decided by the imaginary-axis eigenvalues of the Hamiltonian matrix
 /// (Boyd, Balakrishnan & Kabamba 1989; Grivet-Talocia 2004, IEEE TCAS-I 51(9)), not by sampling:
 ///
@@ -64,7 +64,7 @@ PassivityResult continuous_passivity(const Order& order, const double* theta);
 PassivityResult discrete_passivity(const codegen::DiscreteModel& model, bool scan_minimum = true);
 
 /// Fast exact decision for the fitter: G∞ < 0 or Re G(0) < 0 reject at once, the term-wise sufficient
-/// conditions (G∞ ≥ 0, A_q ≥ 0, |C_s| β_s ≤ B_s α_s; physics.md §2.2) accept at once, the Hamiltonian
+/// conditions (G∞ ≥ 0, A_q ≥ 0, |C_s| β_s ≤ B_s α_s; docs/physics.md §2.2) accept at once, the Hamiltonian
 /// test decides the rest. False for a non-causal model (λ or α ≤ 0).
 bool is_passive(const Order& order, const double* theta);
 

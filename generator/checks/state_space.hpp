@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// Real SISO state-space realisations of the continuous multipole model and of an emitted discrete
-/// filter, and the bilinear (Möbius) map of a discrete realisation to a continuous one (physics.md §2.3).
+/// filter, and the bilinear (Möbius) map of a discrete realisation to a continuous one (docs/physics.md §2.3).
 /// These are what the exact (Hamiltonian) passivity test works on.
 #pragma once
 
@@ -21,7 +21,7 @@ struct StateSpace {
   Eigen::Index states() const { return A.rows(); }
 };
 
-/// Continuous realisation of G (θ packed as model/order.hpp), physics.md §2.3(a):
+/// Continuous realisation of G (θ packed as model/order.hpp), docs/physics.md §2.3(a):
 /// real pole A_i = −λ, B_i = 1, C_i = A_q; pair A_i = [−α β; −β −α], B_i = [1 0]ᵀ, C_i = [2B −2C];
 /// D = G∞.
 StateSpace continuous_realisation(const Order& order, const double* theta);
@@ -31,7 +31,7 @@ StateSpace continuous_realisation(const Order& order, const double* theta);
 /// D = cε; pair ψ^n = π ψ^{n−1} + g u^n, y += 2 Re(c ψ^n); FIR taps d_1.. through a delay line (poles z = 0).
 StateSpace discrete_realisation(const codegen::DiscreteModel& model);
 
-/// The continuous system G_c(s) = H((1 + s)/(1 − s)) (physics.md §2.3, "Discrete filters"):
+/// The continuous system G_c(s) = H((1 + s)/(1 − s)) (docs/physics.md §2.3, "Discrete filters"):
 /// A_c = (A + I)^{-1}(A − I), B_c = √2 (A + I)^{-1} B, C_c = √2 C (A + I)^{-1}, D_c = D − C (A + I)^{-1} B.
 /// Re H(e^{jθ}) = Re G_c(jω) with ω = tan(θ/2). Throws InternalError if A has an eigenvalue at z = −1.
 StateSpace bilinear_to_continuous(const StateSpace& discrete);

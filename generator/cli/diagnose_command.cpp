@@ -115,7 +115,7 @@ int run_diagnose_command(const DiagnoseOptions& o) {
     for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
     print_summary(d, path);
   }
-  // contract.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an
+  // docs/cli.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an
   // identified cause (the verdict names an effect, Bayes factor >= 20 dB); `none` (the gap is noise or
   // no candidate explains it decisively) exits 0. diagnosis.json is written either way.
   return d.verdict.effect == "none" ? 0 : 1;

@@ -83,7 +83,7 @@ int run_emit_command(const EmitOptions& o) {
   if (!result.safe()) {
     if (!o.allow_unsafe) {
       fmt::print(stderr, "admitgen: {}\n", result.refusal(o.out));
-      return 1;  // a check found a violation (contract exit code 1); nothing was written
+      return 1;  // a check found a violation (exit code 1, docs/cli.md); nothing was written
     }
     fmt::print(stderr, "warning: --allow-unsafe: {}\n", result.refusal(o.out));
   }

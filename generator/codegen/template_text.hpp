@@ -2,7 +2,7 @@
 /// @file
 /// The whole template language of templates/: {{name}} substitutes a value; {{#list}}…{{/list}} repeats
 /// its block once per item of a list (an item sees its own values, then the enclosing ones). Nothing
-/// else — names and numbers are computed in C++, the templates only place them (style.md habit 12).
+/// else — names and numbers are computed in C++, the templates only place them (docs/runtime.md).
 #pragma once
 
 #include <map>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// How an order is chosen from the evidence grid (method.md, "Model selection"):
+/// How an order is chosen from the evidence grid (docs/method.md, "Model selection"):
 ///   best         the highest ln Z;
 ///   cheapest:DB  the fewest state buffers (Q + 2S) among orders within DB deciban of the best
 ///                (ties broken by higher evidence) — the paper's argument for Q1S1 over Q0S2.

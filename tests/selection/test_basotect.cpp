@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Test 5 of the foundations issue: every real Basotect measurement (TU Berlin, samples/basotect_tuberlin)
+// Real data: every real Basotect measurement (TU Berlin, samples/basotect_tuberlin)
 // fits end to end over the Q0-3 × S0-3 grid, and the selected order explains the data.
 //
 // Settings: 100 live points (not 500) and one missed-mode retry round, to keep the four 904-1025-point
