@@ -18,7 +18,7 @@ namespace {
 
 /// The effect of each case at a clear and at a marginal size (synth --effect text). Sizes are chosen
 /// against σ = 0.003: "clear" leaves the effect's gap several times the noise, "marginal" near the
-/// detection limit (README table).
+/// detection limit (docs/diagnosis.md table).
 struct EffectSizes {
   std::string name;
   std::string clear;
