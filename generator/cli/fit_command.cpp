@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
+#include "inference/evidence.hpp"
 #include "output/fit_json.hpp"
 #include "output/posterior_export.hpp"
 #include "report/fit_report.hpp"

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "selection/fit.hpp"
 
-#include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -42,7 +42,7 @@ ModelResult run_full(const Measurement& data, const Order& order, const FitSetti
   const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
   const Likelihood likelihood(data, order, settings.data_count);
   const auto log_likelihood = [&](const double* th) {
-    if (settings.passive && !checks::is_passive(order, th)) return -std::numeric_limits<double>::infinity();
+    if (settings.passive && !is_passive(order, th)) return -std::numeric_limits<double>::infinity();
     return likelihood(th);
   };
   const NestedSettings sampler = order_sampler_settings(order, settings, round);
