@@ -25,7 +25,7 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 SamplerKind parse_sampler_kind(const std::string& text) {
   if (text == "poles") return SamplerKind::poles;
   if (text == "full") return SamplerKind::full;
-  throw InputError(fmt::format("--sampler '{}': expected full (default) or poles", text));
+  throw InputError(fmt::format("{} '{}': expected full (default) or poles", setting("sampler_kind"), text));
 }
 
 namespace {
@@ -176,8 +176,8 @@ void check_constrainable(const Measurement& data, const FitSettings& settings) {
   const int k = real_data_count(settings.data_count, data.size());
   if (k < largest.dim() + 2)
     throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
-                                 "--qmax/--smax or supply more frequency points",
-                                 largest.name(), largest.dim(), k));
+                                 "{}/{} or supply more frequency points",
+                                 largest.name(), largest.dim(), k, setting("qmax"), setting("smax")));
 }
 
 }  // namespace

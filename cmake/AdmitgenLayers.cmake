@@ -1,0 +1,110 @@
+# SPDX-License-Identifier: MIT
+# The generator's layers, read from generator/layers.txt (the one declaration; docs/architecture.md).
+# Used by the build (generator/CMakeLists.txt) and, in script mode, by tools/check-layers.
+#
+#   admitgen_read_layers(<table> <source-dir>)
+#       Parses the table and checks it (known names, every arrow points to a layer declared above, no
+#       layer twice). Sets in the caller: ADMITGEN_LAYERS (all, lowest first), ADMITGEN_PRESENT_LAYERS
+#       (those whose folder exists under <source-dir>), and for each layer L
+#       ADMITGEN_LAYER_<L>_PUBLIC / ADMITGEN_LAYER_<L>_PRIVATE (lists of layers or "runtime").
+#
+#   admitgen_add_layer_libraries(<suffix> <include-root>)   (build only)
+#       One library admitgen_layer_<L><suffix> per present layer but cli, linked to the libraries of the
+#       layers it may use, PUBLIC or PRIVATE as declared, and an INTERFACE aggregate
+#       admitgen_core<suffix> over all of them. A layer's include directory is <include-root>/<L>, which
+#       holds a single link <L> -> generator/<L>: `#include "L/x.hpp"` resolves only in a target that
+#       links admitgen_layer_<L>, so an include of a layer that is not below fails to compile.
+include_guard(GLOBAL)
+
+set(ADMITGEN_EXTERNAL_LAYERS runtime)
+
+function(admitgen_read_layers table source_dir)
+  file(STRINGS ${table} rows)
+  set(layers "")
+  set(present "")
+  foreach(row IN LISTS rows)
+    if(row MATCHES "^[ \t]*(#|$)")
+      continue()
+    endif()
+    if(NOT row MATCHES "^[ \t]*([a-z_]+)[ \t]*\\|([a-z_ \t]*)\\|([a-z_ \t]*)$")
+      message(FATAL_ERROR "${table}: cannot read the row '${row}' (expected: layer | public ... | private ...)")
+    endif()
+    set(layer ${CMAKE_MATCH_1})
+    set(public_text "${CMAKE_MATCH_2}")
+    set(private_text "${CMAKE_MATCH_3}")  # string(REGEX) below resets CMAKE_MATCH_<n>
+    string(REGEX MATCHALL "[a-z_]+" public "${public_text}")
+    string(REGEX MATCHALL "[a-z_]+" private "${private_text}")
+    if(layer IN_LIST layers OR layer IN_LIST ADMITGEN_EXTERNAL_LAYERS)
+      message(FATAL_ERROR "${table}: layer '${layer}' is declared twice")
+    endif()
+    foreach(dep IN LISTS public private)
+      if(NOT dep IN_LIST layers AND NOT dep IN_LIST ADMITGEN_EXTERNAL_LAYERS)
+        message(FATAL_ERROR "${table}: layer '${layer}' may use '${dep}', which is not a layer declared above it "
+                            "(arrows point down the table only)")
+      endif()
+    endforeach()
+    foreach(dep IN LISTS public)
+      if(dep IN_LIST private)
+        message(FATAL_ERROR "${table}: layer '${layer}' names '${dep}' both public and private")
+      endif()
+    endforeach()
+    list(APPEND layers ${layer})
+    if(IS_DIRECTORY ${source_dir}/${layer})
+      list(APPEND present ${layer})
+    endif()
+    set(ADMITGEN_LAYER_${layer}_PUBLIC "${public}" PARENT_SCOPE)
+    set(ADMITGEN_LAYER_${layer}_PRIVATE "${private}" PARENT_SCOPE)
+  endforeach()
+  # Every folder of generator/ holding sources is a declared layer.
+  file(GLOB entries LIST_DIRECTORIES true RELATIVE ${source_dir} ${source_dir}/*)
+  foreach(entry IN LISTS entries)
+    if(IS_DIRECTORY ${source_dir}/${entry} AND NOT entry IN_LIST layers)
+      file(GLOB_RECURSE sources ${source_dir}/${entry}/*.cpp ${source_dir}/${entry}/*.hpp)
+      if(sources)
+        message(FATAL_ERROR "generator/${entry}/ is not a declared layer: add a row for it to ${table}")
+      endif()
+    endif()
+  endforeach()
+  set(ADMITGEN_LAYERS "${layers}" PARENT_SCOPE)
+  set(ADMITGEN_PRESENT_LAYERS "${present}" PARENT_SCOPE)
+endfunction()
+
+if(NOT CMAKE_SCRIPT_MODE_FILE)
+  function(admitgen_add_layer_libraries suffix include_root)
+    set(aggregate admitgen_core${suffix})
+    add_library(${aggregate} INTERFACE)
+    foreach(layer IN LISTS ADMITGEN_PRESENT_LAYERS)
+      if(layer STREQUAL "cli")
+        continue()
+      endif()
+      set(target admitgen_layer_${layer}${suffix})
+      file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.cpp)
+      list(APPEND sources ${ADMITGEN_LAYER_${layer}_EXTRA_SOURCES})
+      if(sources)
+        add_library(${target} STATIC ${sources})
+        set(usage PUBLIC)
+        admitgen_warnings(${target})
+      else()
+        add_library(${target} INTERFACE)
+        set(usage INTERFACE)
+      endif()
+      target_include_directories(${target} ${usage} ${include_root}/${layer} ${ADMITGEN_LAYER_${layer}_EXTRA_INCLUDES})
+      target_link_libraries(${target} ${usage} Eigen3::Eigen nlohmann_json::nlohmann_json fmt::fmt
+                                               OpenSSL::Crypto Threads::Threads)
+      foreach(visibility PUBLIC PRIVATE)
+        set(link ${visibility})
+        if(usage STREQUAL "INTERFACE")
+          set(link INTERFACE)
+        endif()
+        foreach(dep IN LISTS ADMITGEN_LAYER_${layer}_${visibility})
+          if(dep STREQUAL "runtime")
+            target_link_libraries(${target} ${link} admitgen_rt)
+          elseif(dep IN_LIST ADMITGEN_PRESENT_LAYERS)
+            target_link_libraries(${target} ${link} admitgen_layer_${dep}${suffix})
+          endif()
+        endforeach()
+      endforeach()
+      target_link_libraries(${aggregate} INTERFACE ${target})
+    endforeach()
+  endfunction()
+endif()
