@@ -4,21 +4,29 @@
 #
 #   admitgen_read_layers(<table> <source-dir>)
 #       Parses the table and checks it (known names, every arrow points to a layer declared above, no
-#       layer twice). Sets in the caller: ADMITGEN_LAYERS (all, lowest first), ADMITGEN_PRESENT_LAYERS
+#       layer twice). Sets in the caller: ADMITGEN_EXTERNAL_LAYERS (runtime), ADMITGEN_LAYERS (all,
+#       lowest first), ADMITGEN_PRESENT_LAYERS
 #       (those whose folder exists under <source-dir>), and for each layer L
 #       ADMITGEN_LAYER_<L>_PUBLIC / ADMITGEN_LAYER_<L>_PRIVATE (lists of layers or "runtime").
 #
 #   admitgen_add_layer_libraries(<suffix> <include-root>)   (build only)
-#       One library admitgen_layer_<L><suffix> per present layer but cli, linked to the libraries of the
+#       One library admitgen_layer_<L><suffix> per present layer, linked to the libraries of the
 #       layers it may use, PUBLIC or PRIVATE as declared, and an INTERFACE aggregate
 #       admitgen_core<suffix> over all of them. A layer's include directory is <include-root>/<L>, which
 #       holds a single link <L> -> generator/<L>: `#include "L/x.hpp"` resolves only in a target that
 #       links admitgen_layer_<L>, so an include of a layer that is not below fails to compile.
+#       Per layer, the caller may set ADMITGEN_LAYER_<L>_EXTRA_SOURCES (generated sources),
+#       ADMITGEN_LAYER_<L>_EXTRA_INCLUDES, ADMITGEN_LAYER_<L>_EXTRA_LIBS (PUBLIC) and
+#       ADMITGEN_LAYER_<L>_EXCLUDE (a regex of sources left out, e.g. an executable's main).
+#
+#   admitgen_link_as_layer_source(<target> <layer> <suffix>)   (build only)
+#       Links <target> as if its sources were sources of <layer>: the layer's library and its private
+#       layers (the tests' probes of tests/layers/).
 include_guard(GLOBAL)
 
-set(ADMITGEN_EXTERNAL_LAYERS runtime)
-
 function(admitgen_read_layers table source_dir)
+  set(ADMITGEN_EXTERNAL_LAYERS runtime)  # not folders of generator/: the C99 runtime
+  set(ADMITGEN_EXTERNAL_LAYERS ${ADMITGEN_EXTERNAL_LAYERS} PARENT_SCOPE)
   file(STRINGS ${table} rows)
   set(layers "")
   set(present "")
@@ -74,11 +82,11 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
     set(aggregate admitgen_core${suffix})
     add_library(${aggregate} INTERFACE)
     foreach(layer IN LISTS ADMITGEN_PRESENT_LAYERS)
-      if(layer STREQUAL "cli")
-        continue()
-      endif()
       set(target admitgen_layer_${layer}${suffix})
       file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.cpp)
+      if(ADMITGEN_LAYER_${layer}_EXCLUDE)
+        list(FILTER sources EXCLUDE REGEX "${ADMITGEN_LAYER_${layer}_EXCLUDE}")
+      endif()
       list(APPEND sources ${ADMITGEN_LAYER_${layer}_EXTRA_SOURCES})
       if(sources)
         add_library(${target} STATIC ${sources})
@@ -90,7 +98,7 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
       endif()
       target_include_directories(${target} ${usage} ${include_root}/${layer} ${ADMITGEN_LAYER_${layer}_EXTRA_INCLUDES})
       target_link_libraries(${target} ${usage} Eigen3::Eigen nlohmann_json::nlohmann_json fmt::fmt
-                                               OpenSSL::Crypto Threads::Threads)
+                                               OpenSSL::Crypto Threads::Threads ${ADMITGEN_LAYER_${layer}_EXTRA_LIBS})
       foreach(visibility PUBLIC PRIVATE)
         set(link ${visibility})
         if(usage STREQUAL "INTERFACE")
@@ -105,6 +113,17 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
         endforeach()
       endforeach()
       target_link_libraries(${aggregate} INTERFACE ${target})
+    endforeach()
+  endfunction()
+
+  function(admitgen_link_as_layer_source target layer suffix)
+    target_link_libraries(${target} PRIVATE admitgen_layer_${layer}${suffix})
+    foreach(dep IN LISTS ADMITGEN_LAYER_${layer}_PRIVATE)
+      if(dep STREQUAL "runtime")
+        target_link_libraries(${target} PRIVATE admitgen_rt)
+      elseif(dep IN_LIST ADMITGEN_PRESENT_LAYERS)
+        target_link_libraries(${target} PRIVATE admitgen_layer_${dep}${suffix})
+      endif()
     endforeach()
   endfunction()
 endif()
