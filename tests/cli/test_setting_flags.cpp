@@ -2,7 +2,12 @@
 // Library errors name the setting at fault by its settings field (core/errors.hpp, setting()); the CLI
 // respells each as its flag (cli/options.hpp, flag_for). References: the field and flag names as the
 // settings structs and the option groups spell them.
+#include "cli/check_command.hpp"
+#include "cli/diagnose_command.hpp"
+#include "cli/emit_command.hpp"
+#include "cli/fit_command.hpp"
 #include "cli/options.hpp"
+#include "cli/synth_command.hpp"
 #include "core/errors.hpp"
 #include "data/csv_reader.hpp"
 #include "test_support.hpp"
@@ -53,9 +58,21 @@ TEST_CASE("setting errors: every setting a library message names has a flag") {
     for (std::sregex_iterator it(s.begin(), s.end(), call), end; it != end; ++it) keys.insert((*it)[1].str());
   }
   CHECK(keys.size() >= 15);  // the data, tube, fit and synthesis settings named today
+  // The flag must be an option of some subcommand of the real command line.
+  CLI::App app;
+  int exit_code = 0;
+  cli::setup_fit_command(app, exit_code);
+  cli::setup_emit_command(app, exit_code);
+  cli::setup_synth_command(app, exit_code);
+  cli::setup_diagnose_command(app, exit_code);
+  cli::setup_check_command(app, exit_code);
   for (const auto& key : keys) {
     INFO(key);
     const std::string flag = cli::flag_for(key);
-    CHECK(flag.rfind("--", 0) == 0);
+    REQUIRE(flag.rfind("--", 0) == 0);
+    bool found = false;
+    for (const char* name : {"fit", "emit", "synth", "diagnose", "check"})
+      found = found || app.get_subcommand(name)->get_option_no_throw(flag) != nullptr;
+    CHECK(found);
   }
 }
