@@ -3,6 +3,7 @@
 #include "checks/passivity.hpp"
 #include "core/rng.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 
 #include <doctest/doctest.h>
 
