@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "checks/check_suite.hpp"
 
+#include "codegen/runtime_filter.hpp"
+
 #include <fmt/format.h>
 
 #include <cstdlib>
@@ -69,6 +71,15 @@ void compare(CheckResult& r, const std::string& text, const std::string& type, c
   }
 }
 
+/// A rate's tables as the runtime reads them (codegen/runtime_filter.hpp), entries as doubles.
+struct Tables {
+  std::vector<double> fir, real, pair;
+};
+template <typename Sample>
+Tables tables(const codegen::RuntimeModel<Sample>& t) {
+  return {{t.fir().begin(), t.fir().end()}, {t.real().begin(), t.real().end()}, {t.pair().begin(), t.pair().end()}};
+}
+
 }  // namespace
 
 CheckResult check_header_integrity(const CheckSubject& s) {
@@ -87,22 +98,14 @@ CheckResult check_header_integrity(const CheckSubject& s) {
   std::size_t values = 0;
   for (const auto& rate : h.rates) {
     const std::string base = fmt::format("{}_{}", h.name, rate.fs_hz);
-    std::vector<double> fir, real, pair, scalars;
     const auto& m = rate.model;
-    if (f32) {
-      const auto f = codegen::to_float(m);
-      for (float v : f.fir) fir.push_back(v);
-      for (const auto& t : f.real) real.insert(real.end(), t.begin(), t.end());
-      for (const auto& t : f.pair) pair.insert(pair.end(), t.begin(), t.end());
-      scalars = {double(f.h0)};
-    } else {
-      const auto& q = *rate.fixed;
-      for (auto v : q.fir) fir.push_back(v);
-      for (const auto& t : q.real) real.insert(real.end(), {double(t.eps), double(t.shift), double(t.c)});
-      for (const auto& t : q.pair)
-        pair.insert(pair.end(), {double(t.e_r), double(t.p_i), double(t.g), double(t.shift), double(t.c_r), double(t.c_i)});
-      scalars = {double(q.out_shift), double(q.acc_shift)};
-    }
+    const Tables t = f32 ? tables(codegen::RuntimeModelF32(codegen::to_float(m), rate.fs_hz))
+                     : h.format == codegen::Format::q31 ? tables(codegen::RuntimeModelQ31(*rate.fixed, rate.fs_hz))
+                                                        : tables(codegen::RuntimeModelQ15(*rate.fixed, rate.fs_hz));
+    const auto& [fir, real, pair] = t;
+    const std::vector<double> scalars =
+        f32 ? std::vector<double>{double(codegen::to_float(m).h0)}
+            : std::vector<double>{double(rate.fixed->out_shift), double(rate.fixed->acc_shift)};
     compare(r, s.header_text, ctype, base + "_fir", true, fir, f32, 0, fir.size());
     compare(r, s.header_text, ctype, base + "_real", true, real, f32, 0, real.size());
     compare(r, s.header_text, ctype, base + "_pair", true, pair, f32, 0, pair.size());
