@@ -191,12 +191,12 @@ TemplateContext rate_context(const EmittedRate& r, Format format) {
   c.values["ref_h0"] = dlit(m.h0());
   if (format == Format::f32) {
     c.values["l1"] = fmt::format("{:.6g}", m.l1_norm());
-    c.values["model_scalars"] = flit(r.f32.h0);
+    c.lists["f32_model"] = {item({{"h0", flit(r.f32.h0)}})};
     c.lists["fixed_doc"] = {};
   } else {
     const auto& q = *r.fixed;
     c.values["l1"] = fmt::format("{:.6g}", q.l1_norm);
-    c.values["model_scalars"] = fmt::format("{}, {}", q.out_shift, q.acc_shift);
+    c.lists["f32_model"] = {};
     c.lists["fixed_doc"] = {item({{"out_shift", std::to_string(q.out_shift)},
                                   {"y_exp", std::to_string(q.y_exp)},
                                   {"acc_shift", std::to_string(q.acc_shift)},

@@ -149,6 +149,16 @@ const char *admitgen_rt_result_description(admitgen_rt_result result);
 #define ADMITGEN_RT_Q_PAIR_CR 4
 #define ADMITGEN_RT_Q_PAIR_CI 5
 
+/** Names a field in a model initialiser (generated headers fill every field by name):
+ *  ADMITGEN_RT_FIELD(n_fir) 6 is the designated initialiser .n_fir = 6 in C99 and C++20, where the compiler
+ *  checks the name (C++20 also the order). C++ before C++20 has no designated initialisers: there it is the
+ *  positional 6, in declaration order, which the C++20 build of the runtime tests proves. */
+#if !defined(__cplusplus) || __cplusplus >= 202002L
+#define ADMITGEN_RT_FIELD(name) .name =
+#else
+#define ADMITGEN_RT_FIELD(name)
+#endif
+
 /** Float model; tables in the f32 layout above. */
 typedef struct admitgen_rt_model_f32 {
   uint32_t abi_version; /**< ADMITGEN_RT_ABI_VERSION of the generator */
