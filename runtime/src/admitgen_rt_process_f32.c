@@ -67,23 +67,35 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
   }
 }
 
-/* ---- small-n path: one node, a chunk of nf frames; acc[f] collects the terms in the canonical order ---- */
+/* ---- small-n path: per node, a chunk of frames at a time ----
+ * A term's recursion is latency-bound (the pair's xi -> eta -> xi cycle; docs/runtime.md, "Desktop
+ * figures"), so a recursion pass holds nothing but the recursions of two terms side by side (their chains
+ * overlap) and writes the new state of every frame to a trajectory. One output pass then forms each frame's
+ * output in the canonical order, d_0 u, + d_k u^{n-k}, + c x' per real pole, + (cr xi' + ci eta') per pair,
+ * ADMITGEN_RT_FV frames at a time in registers, without a loop-carried dependency (the compiler vectorises
+ * it). Putting the output products into the recursion loop instead measured 15 cycles per sample rather than
+ * 9 on a Zen 5: they compete with the recursion for the multiply and add pipes. */
+
+/* Trajectory floats per chunk (stack): a chunk has ADMITGEN_RT_CHUNK frames while the model has at most 4
+ * states (Q1S1, Q0S2, ...), fewer beyond. */
+#define ADMITGEN_RT_TRAJ (4 * ADMITGEN_RT_CHUNK)
+/* Frames per step of the output pass (two 4-float vectors). */
+#define ADMITGEN_RT_FV 8
 
 typedef struct admitgen_rt__rterm {
   float *x;
-  float eps, c;
+  float eps;
 } admitgen_rt__rterm;
 
 typedef struct admitgen_rt__pterm {
   float *xi, *eta;
-  float er, pi, g, cr, ci;
+  float er, pi, g;
 } admitgen_rt__pterm;
 
 static admitgen_rt__rterm admitgen_rt__rterm_at(const admitgen_rt_f32 *inst, int32_t t, int32_t i) {
   admitgen_rt__rterm r;
   r.x = inst->x + (size_t)t * (size_t)inst->n_nodes + (size_t)i;
   r.eps = inst->model->real[2 * t];
-  r.c = inst->model->real[2 * t + 1];
   return r;
 }
 
@@ -95,75 +107,67 @@ static admitgen_rt__pterm admitgen_rt__pterm_at(const admitgen_rt_f32 *inst, int
   q.er = p[0];
   q.pi = p[1];
   q.g = p[2];
-  q.cr = p[3];
-  q.ci = p[4];
   return q;
 }
 
-static void admitgen_rt__chunk_r(float *acc, const float *u, int32_t nf, admitgen_rt__rterm r) {
+/* Recursion passes over nf frames: the new states go to tx (real pole), ta and te (pair: xi, eta). */
+static void admitgen_rt__traj_r(float *tx, const float *u, int32_t nf, admitgen_rt__rterm r) {
   float x = *r.x;
   int32_t f;
-  for (f = 0; f < nf; ++f) {
-    x = admitgen_rt__real_f32(x, u[f], r.eps);
-    acc[f] += r.c * x;
-  }
+  for (f = 0; f < nf; ++f) tx[f] = x = admitgen_rt__real_f32(x, u[f], r.eps);
   *r.x = x;
 }
 
-static void admitgen_rt__chunk_p(float *acc, const float *u, int32_t nf, admitgen_rt__pterm p) {
+static void admitgen_rt__traj_p(float *ta, float *te, const float *u, int32_t nf, admitgen_rt__pterm p) {
   float a = *p.xi, e = *p.eta;
   int32_t f;
   for (f = 0; f < nf; ++f) {
     const float a1 = admitgen_rt__xi_f32(a, e, u[f], p.er, p.pi, p.g);
-    e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
-    a = a1;
-    acc[f] += p.cr * a + p.ci * e;
+    te[f] = e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
+    ta[f] = a = a1;
   }
   *p.xi = a;
   *p.eta = e;
 }
 
-static void admitgen_rt__chunk_rr(float *acc, const float *u, int32_t nf, admitgen_rt__rterm r, admitgen_rt__rterm s) {
+static void admitgen_rt__traj_rr(float *tx, float *ty, const float *u, int32_t nf, admitgen_rt__rterm r,
+                                 admitgen_rt__rterm s) {
   float x = *r.x, y = *s.x;
   int32_t f;
   for (f = 0; f < nf; ++f) {
-    x = admitgen_rt__real_f32(x, u[f], r.eps);
-    y = admitgen_rt__real_f32(y, u[f], s.eps);
-    acc[f] += r.c * x;
-    acc[f] += s.c * y;
+    tx[f] = x = admitgen_rt__real_f32(x, u[f], r.eps);
+    ty[f] = y = admitgen_rt__real_f32(y, u[f], s.eps);
   }
   *r.x = x;
   *s.x = y;
 }
 
-static void admitgen_rt__chunk_rp(float *acc, const float *u, int32_t nf, admitgen_rt__rterm r, admitgen_rt__pterm p) {
+static void admitgen_rt__traj_rp(float *tx, float *ta, float *te, const float *u, int32_t nf, admitgen_rt__rterm r,
+                                 admitgen_rt__pterm p) {
   float x = *r.x, a = *p.xi, e = *p.eta;
   int32_t f;
   for (f = 0; f < nf; ++f) {
     const float a1 = admitgen_rt__xi_f32(a, e, u[f], p.er, p.pi, p.g);
-    e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
-    a = a1;
-    x = admitgen_rt__real_f32(x, u[f], r.eps);
-    acc[f] += r.c * x;
-    acc[f] += p.cr * a + p.ci * e;
+    te[f] = e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
+    ta[f] = a = a1;
+    tx[f] = x = admitgen_rt__real_f32(x, u[f], r.eps);
   }
   *r.x = x;
   *p.xi = a;
   *p.eta = e;
 }
 
-static void admitgen_rt__chunk_pp(float *acc, const float *u, int32_t nf, admitgen_rt__pterm p, admitgen_rt__pterm q) {
+static void admitgen_rt__traj_pp(float *ta, float *te, float *tb, float *th, const float *u, int32_t nf,
+                                 admitgen_rt__pterm p, admitgen_rt__pterm q) {
   float a = *p.xi, e = *p.eta, b = *q.xi, h = *q.eta;
   int32_t f;
   for (f = 0; f < nf; ++f) {
     const float a1 = admitgen_rt__xi_f32(a, e, u[f], p.er, p.pi, p.g);
     const float b1 = admitgen_rt__xi_f32(b, h, u[f], q.er, q.pi, q.g);
-    e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
-    h = admitgen_rt__eta_f32(b, h, q.er, q.pi);
-    a = a1;
-    b = b1;
-    acc[f] += p.cr * a + p.ci * e;
-    acc[f] += q.cr * b + q.ci * h;
+    te[f] = e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
+    th[f] = h = admitgen_rt__eta_f32(b, h, q.er, q.pi);
+    ta[f] = a = a1;
+    tb[f] = b = b1;
   }
   *p.xi = a;
   *p.eta = e;
@@ -171,48 +175,113 @@ static void admitgen_rt__chunk_pp(float *acc, const float *u, int32_t nf, admitg
   *q.eta = h;
 }
 
-/* Terms in the canonical order (reals, then pairs), two per pass over the chunk. */
-static void admitgen_rt__chunk_terms(const admitgen_rt_f32 *inst, float *acc, const float *u, int32_t i, int32_t nf) {
+/* Every term's recursion over nf frames, two terms per pass; trajectory j (reals in order, then xi and eta
+ * of each pair) at tr + j * len. */
+static void admitgen_rt__chunk_traj(const admitgen_rt_f32 *inst, float *tr, int32_t len, const float *u, int32_t i,
+                                    int32_t nf) {
   const int32_t nr = inst->model->n_real, nt = nr + inst->model->n_pair;
   int32_t t = 0;
   for (; t + 1 < nt; t += 2) {
+    float *at = tr + (size_t)(t < nr ? t : 2 * t - nr) * (size_t)len; /* trajectory of term t */
     if (t + 1 < nr)
-      admitgen_rt__chunk_rr(acc, u, nf, admitgen_rt__rterm_at(inst, t, i), admitgen_rt__rterm_at(inst, t + 1, i));
+      admitgen_rt__traj_rr(at, at + len, u, nf, admitgen_rt__rterm_at(inst, t, i), admitgen_rt__rterm_at(inst, t + 1, i));
     else if (t < nr)
-      admitgen_rt__chunk_rp(acc, u, nf, admitgen_rt__rterm_at(inst, t, i), admitgen_rt__pterm_at(inst, t + 1 - nr, i));
+      admitgen_rt__traj_rp(at, at + len, at + 2 * len, u, nf, admitgen_rt__rterm_at(inst, t, i),
+                           admitgen_rt__pterm_at(inst, t + 1 - nr, i));
     else
-      admitgen_rt__chunk_pp(acc, u, nf, admitgen_rt__pterm_at(inst, t - nr, i), admitgen_rt__pterm_at(inst, t + 1 - nr, i));
+      admitgen_rt__traj_pp(at, at + len, at + 2 * len, at + 3 * len, u, nf, admitgen_rt__pterm_at(inst, t - nr, i),
+                           admitgen_rt__pterm_at(inst, t + 1 - nr, i));
   }
   if (t < nt) {
+    float *at = tr + (size_t)(t < nr ? t : 2 * t - nr) * (size_t)len;
     if (t < nr)
-      admitgen_rt__chunk_r(acc, u, nf, admitgen_rt__rterm_at(inst, t, i));
+      admitgen_rt__traj_r(at, u, nf, admitgen_rt__rterm_at(inst, t, i));
     else
-      admitgen_rt__chunk_p(acc, u, nf, admitgen_rt__pterm_at(inst, t - nr, i));
+      admitgen_rt__traj_p(at, at + len, u, nf, admitgen_rt__pterm_at(inst, t - nr, i));
   }
 }
 
-/* Node i, frames [f0, f0 + nf), nf <= ADMITGEN_RT_CHUNK; ub = past inputs (oldest first), then the chunk's. */
+/* Outputs of frames [f, f + w) in the canonical order, into y[f..]: one frame at a time. */
+static void admitgen_rt__out_frames(const admitgen_rt_model_f32 *m, const float *u, const float *tr, int32_t len,
+                                    int32_t f, int32_t w, float *y) {
+  int32_t j, k, t;
+  for (j = f; j < f + w; ++j) {
+    float v = (m->n_fir > 0 ? m->fir[0] : 0.0f) * u[j];
+    for (k = 1; k < m->n_fir; ++k) v += m->fir[k] * u[j - k];
+    for (t = 0; t < m->n_real; ++t) v += m->real[2 * t + 1] * tr[(size_t)t * (size_t)len + (size_t)j];
+    for (t = 0; t < m->n_pair; ++t) {
+      const float *a = tr + (size_t)(m->n_real + 2 * t) * (size_t)len + (size_t)j;
+      v += m->pair[5 * t + 3] * a[0] + m->pair[5 * t + 4] * a[len];
+    }
+    y[j] = v;
+  }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* The same, ADMITGEN_RT_FV = 8 frames in two 4-float vectors (GCC/Clang vector extension: SSE on x86-64, NEON
+ * on aarch64, plain scalar code where the target has no vectors); the same operations lane by lane. Vectors
+ * are moved with memcpy (no alignment or aliasing assumption) and never passed by value (no ABI question). */
+typedef float admitgen_rt__v4 __attribute__((vector_size(16)));
+#define ADMITGEN_RT_V4_LOAD2(lo, hi, p) (__builtin_memcpy(&(lo), (p), 16), __builtin_memcpy(&(hi), (p) + 4, 16))
+static void admitgen_rt__out_vec(const admitgen_rt_model_f32 *m, const float *u, const float *tr, int32_t len, int32_t f,
+                                 float *y) {
+  admitgen_rt__v4 v0, v1, a0, a1, b0, b1;
+  int32_t k, t;
+  float c = m->n_fir > 0 ? m->fir[0] : 0.0f;
+  ADMITGEN_RT_V4_LOAD2(a0, a1, u + f);
+  v0 = c * a0;
+  v1 = c * a1;
+  for (k = 1; k < m->n_fir; ++k) {
+    c = m->fir[k];
+    ADMITGEN_RT_V4_LOAD2(a0, a1, u + f - k);
+    v0 += c * a0;
+    v1 += c * a1;
+  }
+  for (t = 0; t < m->n_real; ++t) {
+    c = m->real[2 * t + 1];
+    ADMITGEN_RT_V4_LOAD2(a0, a1, tr + (size_t)t * (size_t)len + (size_t)f);
+    v0 += c * a0;
+    v1 += c * a1;
+  }
+  for (t = 0; t < m->n_pair; ++t) {
+    const float *a = tr + (size_t)(m->n_real + 2 * t) * (size_t)len + (size_t)f;
+    const float cr = m->pair[5 * t + 3], ci = m->pair[5 * t + 4];
+    ADMITGEN_RT_V4_LOAD2(a0, a1, a);
+    ADMITGEN_RT_V4_LOAD2(b0, b1, a + len);
+    v0 += cr * a0 + ci * b0;
+    v1 += cr * a1 + ci * b1;
+  }
+  __builtin_memcpy(y + f, &v0, 16);
+  __builtin_memcpy(y + f + 4, &v1, 16);
+}
+#else
+static void admitgen_rt__out_vec(const admitgen_rt_model_f32 *m, const float *u, const float *tr, int32_t len, int32_t f,
+                                 float *y) {
+  admitgen_rt__out_frames(m, u, tr, len, f, ADMITGEN_RT_FV, y);
+}
+#endif
+
+/* Node i, frames [f0, f0 + nf), nf <= the model's chunk length len; ub = past inputs (oldest first), then the
+ * chunk's. */
 static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t stride, int32_t i,
-                                   int32_t f0, int32_t nf) {
+                                   int32_t f0, int32_t nf, int32_t len) {
   const admitgen_rt_model_f32 *m = inst->model;
   const size_t n = (size_t)inst->n_nodes;
   const int32_t rows = m->n_fir > 1 ? m->n_fir - 1 : 0;
-  float ub[64 + ADMITGEN_RT_CHUNK], acc[ADMITGEN_RT_CHUNK];
+  float ub[ADMITGEN_RT_MAX_TERMS + ADMITGEN_RT_CHUNK], tr[ADMITGEN_RT_TRAJ], yb[ADMITGEN_RT_CHUNK];
+  float *y = pOut != NULL && stride == 1 ? pOut + f0 : yb; /* mono: straight into the output */
   const float *u = ub + rows;
-  const float d0 = m->n_fir > 0 ? m->fir[0] : 0.0f;
   int32_t f, k;
   for (k = 1; k <= rows; ++k) ub[rows - k] = inst->hist[(size_t)admitgen_rt__ring_row(inst->head, k, rows) * n + (size_t)i];
-  for (f = 0; f < nf; ++f) {
-    ub[rows + f] = pIn[(size_t)(f0 + f) * (size_t)stride + (size_t)i];
-    acc[f] = d0 * u[f];
-  }
-  for (k = 1; k < m->n_fir; ++k) {
-    const float d = m->fir[k];
-    for (f = 0; f < nf; ++f) acc[f] += d * u[f - k];
-  }
-  admitgen_rt__chunk_terms(inst, acc, u, i, nf);
-  if (pOut != NULL)
-    for (f = 0; f < nf; ++f) pOut[(size_t)(f0 + f) * (size_t)stride + (size_t)i] = acc[f];
+  if (stride == 1)
+    for (f = 0; f < nf; ++f) ub[rows + f] = pIn[f0 + f];
+  else
+    for (f = 0; f < nf; ++f) ub[rows + f] = pIn[(size_t)(f0 + f) * (size_t)stride + (size_t)i];
+  admitgen_rt__chunk_traj(inst, tr, len, u, i, nf);
+  for (f = 0; f + ADMITGEN_RT_FV <= nf; f += ADMITGEN_RT_FV) admitgen_rt__out_vec(m, u, tr, len, f, y);
+  if (f < nf) admitgen_rt__out_frames(m, u, tr, len, f, nf - f, y);
+  if (pOut != NULL && y == yb)
+    for (f = 0; f < nf; ++f) pOut[(size_t)(f0 + f) * (size_t)stride + (size_t)i] = yb[f];
   if (rows > 0) {
     const int32_t new_head = admitgen_rt__ring_advance(inst->head, nf, rows);
     for (k = 1; k <= rows; ++k) inst->hist[(size_t)admitgen_rt__ring_row(new_head, k, rows) * n + (size_t)i] = u[nf - k];
@@ -235,10 +304,12 @@ void admitgen_rt__process_f32_isa(admitgen_rt_f32 *inst, const float *pIn, float
   const int32_t rows = inst->model->n_fir - 1;
   int32_t f;
   if (inst->n_nodes <= ADMITGEN_RT_SMALL_N) {
-    for (f = 0; f < n_frames; f += ADMITGEN_RT_CHUNK) {
-      const int32_t nf = n_frames - f < ADMITGEN_RT_CHUNK ? n_frames - f : ADMITGEN_RT_CHUNK;
+    const int32_t states = inst->model->n_real + 2 * inst->model->n_pair;
+    const int32_t len = states * ADMITGEN_RT_CHUNK <= ADMITGEN_RT_TRAJ ? ADMITGEN_RT_CHUNK : ADMITGEN_RT_TRAJ / states;
+    for (f = 0; f < n_frames; f += len) {
+      const int32_t nf = n_frames - f < len ? n_frames - f : len;
       int32_t i;
-      for (i = 0; i < inst->n_nodes; ++i) admitgen_rt__chunk_f32(inst, pIn, pOut, stride, i, f, nf);
+      for (i = 0; i < inst->n_nodes; ++i) admitgen_rt__chunk_f32(inst, pIn, pOut, stride, i, f, nf, len);
       if (rows > 0) inst->head = admitgen_rt__ring_advance(inst->head, nf, rows);
     }
   } else {
