@@ -209,9 +209,10 @@ void admitgen_rt__qblock_avx2(const admitgen_rt__qtab *t, const admitgen_rt__qst
 #define ADMITGEN_RT_QVEC_AVX512 16
 void admitgen_rt__qblock_avx512(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
                                 size_t base, size_t b, int32_t new_head, int commit);
-/* Float fused pass of one frame over nodes [0, n - n % 32) (same operations as the generic pass); returns
- * that count. */
-int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int commit);
+/* Float fused pass of one frame over nodes [i0, n - (n - i0) % 32) (same operations as the generic pass);
+ * returns the end. AVX-512: nodes [0, n - n % 64). */
+int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int32_t i0, int commit);
+int32_t admitgen_rt__frame_f32_avx512(const admitgen_rt_f32 *inst, const float *in, float *out, int commit);
 #endif
 #if ADMITGEN_RT_HAVE_NEON
 #define ADMITGEN_RT_QVEC 4

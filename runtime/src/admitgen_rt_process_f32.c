@@ -288,11 +288,12 @@ static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, floa
   }
 }
 
-/* One frame over every node: AVX2 blocks first when the CPU has them, the generic pass for the rest. */
+/* One frame over every node: AVX-512 and AVX2 blocks first when the CPU has them, the generic pass for the rest. */
 static void admitgen_rt__frame_f32(const admitgen_rt_f32 *inst, const float *in, float *out, int commit, int simd) {
   int32_t done = 0;
 #if ADMITGEN_RT_HAVE_AVX2
-  if (simd) done = admitgen_rt__frame_f32_avx2(inst, in, out, commit);
+  if (simd == 2) done = admitgen_rt__frame_f32_avx512(inst, in, out, commit);
+  if (simd) done = admitgen_rt__frame_f32_avx2(inst, in, out, done, commit);
 #else
   (void)simd;
 #endif
