@@ -77,7 +77,8 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
  * 9 on a Zen 5: they compete with the recursion for the multiply and add pipes. */
 
 /* Trajectory floats per chunk (stack): a chunk has ADMITGEN_RT_CHUNK frames while the model has at most 4
- * states (Q1S1, Q0S2, ...), fewer beyond. */
+ * states (Q1S1, Q0S2, ...), half as many up to 8 states, and so on; a model of more states than this (at most
+ * 3 ADMITGEN_RT_MAX_TERMS) runs on the block path. */
 #define ADMITGEN_RT_TRAJ (4 * ADMITGEN_RT_CHUNK)
 /* Frames per step of the output pass (two 4-float vectors). */
 #define ADMITGEN_RT_FV 8
@@ -304,9 +305,10 @@ void admitgen_rt__process_f32_isa(admitgen_rt_f32 *inst, const float *pIn, float
                                   int32_t stride, int isa) {
   const int32_t rows = inst->model->n_fir - 1;
   int32_t f;
-  if (inst->n_nodes <= ADMITGEN_RT_SMALL_N) {
-    const int32_t states = inst->model->n_real + 2 * inst->model->n_pair;
-    const int32_t len = states * ADMITGEN_RT_CHUNK <= ADMITGEN_RT_TRAJ ? ADMITGEN_RT_CHUNK : ADMITGEN_RT_TRAJ / states;
+  const int32_t states = inst->model->n_real + 2 * inst->model->n_pair;
+  if (inst->n_nodes <= ADMITGEN_RT_SMALL_N && states <= ADMITGEN_RT_TRAJ) { /* (beyond: the block path) */
+    int32_t len = ADMITGEN_RT_CHUNK; /* frames per chunk: as many as the trajectories have room for */
+    while (len * states > ADMITGEN_RT_TRAJ) len /= 2;
     for (f = 0; f < n_frames; f += len) {
       const int32_t nf = n_frames - f < len ? n_frames - f : len;
       int32_t i;

@@ -172,6 +172,43 @@ static void f32_accuracy(void) {
   printf("f32: golden input, max |y - y_double| = %.3g (bound %.3g, derived in f32_bound)\n", worst, bound);
   RT_CHECK(worst <= bound, "f32 error %.3g above the bound %.3g", worst, bound);
 }
+
+/* Models of many states: the small-n path shortens its chunks (and beyond ADMITGEN_RT_TRAJ states hands over to
+ * the block path); 1 node in two calls must equal node 3 of 9 in one call, bit for bit, at 60 real poles and
+ * 0..64 pairs (60..188 states). Synthetic stable coefficients, |z| < 1. */
+static void f32_many_states(void) {
+  static float fir[6] = {0.5f, 0.1f, 0.05f, 0.02f, 0.01f, 0.005f}, real[2 * 60], pair[5 * 64];
+  static float in9[300 * 9], out9[300 * 9];
+  int32_t t, f, np;
+  for (t = 0; t < 60; ++t) {
+    real[2 * t] = 0.01f * (float)(t + 1) / 60.0f;
+    real[2 * t + 1] = 0.01f;
+  }
+  for (t = 0; t < 64; ++t) {
+    pair[5 * t] = -0.001f;
+    pair[5 * t + 1] = 0.01f * (float)t / 64.0f;
+    pair[5 * t + 2] = 0.001f;
+    pair[5 * t + 3] = 0.01f;
+    pair[5 * t + 4] = 0.005f;
+  }
+  for (f = 0; f < 300 * 9; ++f) in9[f] = INPUT((f * 7) % N_GOLD);
+  for (np = 0; np <= 64; np += 16) {
+    const admitgen_rt_model_f32 m = {ADMITGEN_RT_ABI_VERSION, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, 6, 60, np, 0.5f,
+                                     fir, real, pair};
+    admitgen_rt_f32 nine, one;
+    int32_t bad = 0;
+    RT_CHECK(admitgen_rt_init_f32(&nine, &m, 48000, 9, rt_slot(0), SLOT_BYTES) == ADMITGEN_RT_SUCCESS &&
+                 admitgen_rt_init_f32(&one, &m, 48000, 1, rt_slot(1), SLOT_BYTES) == ADMITGEN_RT_SUCCESS,
+             "init of the %ld-pair model", (long)np);
+    (void)admitgen_rt_process_f32(&nine, in9, out9, 300, 9);
+    for (f = 0; f < 300; ++f) in_f32[f] = in9[f * 9 + 3];
+    (void)admitgen_rt_process_f32(&one, in_f32, out_a_f32, 77, 1);
+    (void)admitgen_rt_process_f32(&one, in_f32 + 77, out_a_f32 + 77, 223, 1);
+    for (f = 0; f < 300; ++f) bad += out_a_f32[f] != out9[f * 9 + 3];
+    RT_CHECK(bad == 0, "60 reals, %ld pairs: 1 node differs from node 3 of 9 in %ld frames", (long)np, (long)bad);
+  }
+  printf("f32: 60 real poles and 0..64 pairs: 1 node (small-n path, short chunks or block path) = node 3 of 9\n");
+}
 #undef RT_FIXED
 #endif
 
@@ -183,6 +220,7 @@ int main(void) {
 #if RT_WITH_F32
   f32_accuracy();
   all_f32();
+  f32_many_states();
 #endif
   printf("%s (%d failures)\n", rt_failures == 0 ? "PASS" : "FAIL", rt_failures);
   return rt_failures == 0 ? 0 : 1;
