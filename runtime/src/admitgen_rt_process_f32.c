@@ -269,8 +269,10 @@ static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, floa
   const admitgen_rt_model_f32 *m = inst->model;
   const size_t n = (size_t)inst->n_nodes;
   const int32_t rows = m->n_fir > 1 ? m->n_fir - 1 : 0;
-  float ub[ADMITGEN_RT_MAX_TERMS + ADMITGEN_RT_CHUNK], tr[ADMITGEN_RT_TRAJ], yb[ADMITGEN_RT_CHUNK];
-  float *y = pOut != NULL && stride == 1 ? pOut + f0 : yb; /* mono: straight into the output */
+  float ub[ADMITGEN_RT_MAX_TERMS + ADMITGEN_RT_CHUNK], tr[ADMITGEN_RT_TRAJ];
+  /* mono: straight into the output; else into the first trajectory (tr has room for len frames), whose frame f
+   * the output pass reads before it writes output frame f */
+  float *y = pOut != NULL && stride == 1 ? pOut + f0 : tr;
   const float *u = ub + rows;
   int32_t f, k;
   for (k = 1; k <= rows; ++k) ub[rows - k] = inst->hist[(size_t)admitgen_rt__ring_row(inst->head, k, rows) * n + (size_t)i];
@@ -281,8 +283,8 @@ static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, floa
   admitgen_rt__chunk_traj(inst, tr, len, u, i, nf);
   for (f = 0; f + ADMITGEN_RT_FV <= nf; f += ADMITGEN_RT_FV) admitgen_rt__out_vec(m, u, tr, len, f, y);
   if (f < nf) admitgen_rt__out_frames(m, u, tr, len, f, nf - f, y);
-  if (pOut != NULL && y == yb)
-    for (f = 0; f < nf; ++f) pOut[(size_t)(f0 + f) * (size_t)stride + (size_t)i] = yb[f];
+  if (pOut != NULL && y == tr)
+    for (f = 0; f < nf; ++f) pOut[(size_t)(f0 + f) * (size_t)stride + (size_t)i] = tr[f];
   if (rows > 0) {
     const int32_t new_head = admitgen_rt__ring_advance(inst->head, nf, rows);
     for (k = 1; k <= rows; ++k) inst->hist[(size_t)admitgen_rt__ring_row(new_head, k, rows) * n + (size_t)i] = u[nf - k];
