@@ -69,12 +69,24 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
 
 /* ---- small-n path: per node, a chunk of frames at a time ----
  * A term's recursion is latency-bound (the pair's xi -> eta -> xi cycle; docs/runtime.md, "Desktop
- * figures"), so a recursion pass holds nothing but the recursions of two terms side by side (their chains
- * overlap) and writes the new state of every frame to a trajectory. One output pass then forms each frame's
- * output in the canonical order, d_0 u, + d_k u^{n-k}, + c x' per real pole, + (cr xi' + ci eta') per pair,
- * ADMITGEN_RT_FV frames at a time in registers, without a loop-carried dependency (the compiler vectorises
- * it). Putting the output products into the recursion loop instead measured 15 cycles per sample rather than
- * 9 on a Zen 5: they compete with the recursion for the multiply and add pipes. */
+ * figures"), so a recursion pass runs two terms side by side (their chains overlap). Two forms, the same
+ * results (every output is d_0 u, + d_k u^{n-k}, + c x' per real pole, + (cr xi' + ci eta') per pair, in this
+ * order):
+ *  - trajectories (ADMITGEN_RT_SMALLN_TRAJ 1: targets with a vector unit): the recursion pass holds nothing but
+ *    the recursions and writes the new state of every frame to a trajectory; one output pass then forms the
+ *    outputs ADMITGEN_RT_FV frames at a time in vector registers. With the output products inside the
+ *    recursion loop a Zen 5 took 15 cycles per sample instead of about 10: they compete with the recursion for
+ *    the multiply and add pipes.
+ *  - accumulators (0: 32-bit MCUs and other scalar cores): the FIR over the chunk into acc[f], then each
+ *    recursion pass adds its terms to acc[f]; no trajectory is stored and read back (Cortex-M4F: 86 instead of
+ *    115 instructions per sample). */
+#ifndef ADMITGEN_RT_SMALLN_TRAJ
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__aarch64__) || defined(__ARM_NEON))
+#define ADMITGEN_RT_SMALLN_TRAJ 1
+#else
+#define ADMITGEN_RT_SMALLN_TRAJ 0
+#endif
+#endif
 
 /* Trajectory floats per chunk (stack): a chunk has ADMITGEN_RT_CHUNK frames while the model has at most 4
  * states (Q1S1, Q0S2, ...), half as many up to 8 states, and so on; a model of more states than this (at most
@@ -83,20 +95,29 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
 /* Frames per step of the output pass (two 4-float vectors). */
 #define ADMITGEN_RT_FV 8
 
+#if ADMITGEN_RT_SMALLN_TRAJ /* the new state of term j, frame f: to its trajectory t */
+#define ADMITGEN_RT_EMIT_R(acc, f, t, x, c) ((t)[f] = (x))
+#define ADMITGEN_RT_EMIT_P(acc, f, ta, te, a, e, cr, ci) ((ta)[f] = (a), (te)[f] = (e))
+#else /* ... or its contribution to the output */
+#define ADMITGEN_RT_EMIT_R(acc, f, t, x, c) ((acc)[f] += (c) * (x))
+#define ADMITGEN_RT_EMIT_P(acc, f, ta, te, a, e, cr, ci) ((acc)[f] += (cr) * (a) + (ci) * (e))
+#endif
+
 typedef struct admitgen_rt__rterm {
   float *x;
-  float eps;
+  float eps, c;
 } admitgen_rt__rterm;
 
 typedef struct admitgen_rt__pterm {
   float *xi, *eta;
-  float er, pi, g;
+  float er, pi, g, cr, ci;
 } admitgen_rt__pterm;
 
 static admitgen_rt__rterm admitgen_rt__rterm_at(const admitgen_rt_f32 *inst, int32_t t, int32_t i) {
   admitgen_rt__rterm r;
   r.x = inst->x + (size_t)t * (size_t)inst->n_nodes + (size_t)i;
   r.eps = inst->model->real[2 * t];
+  r.c = inst->model->real[2 * t + 1];
   return r;
 }
 
@@ -108,67 +129,97 @@ static admitgen_rt__pterm admitgen_rt__pterm_at(const admitgen_rt_f32 *inst, int
   q.er = p[0];
   q.pi = p[1];
   q.g = p[2];
+  q.cr = p[3];
+  q.ci = p[4];
   return q;
 }
 
-/* Recursion passes over nf frames: the new states go to tx (real pole), ta and te (pair: xi, eta). */
-static void admitgen_rt__traj_r(float *tx, const float *u, int32_t nf, admitgen_rt__rterm r) {
+/* Recursion passes over nf frames (trajectories tx of a real pole, ta and te of a pair's xi and eta; or the
+ * accumulators acc: ADMITGEN_RT_EMIT_*), terms emitted in the canonical order. */
+static void admitgen_rt__pass_r(float *acc, float *tx, const float *u, int32_t nf, admitgen_rt__rterm r) {
   float x = *r.x;
   int32_t f;
-  for (f = 0; f < nf; ++f) tx[f] = x = admitgen_rt__real_f32(x, u[f], r.eps);
+  (void)acc;
+  (void)tx;
+  for (f = 0; f < nf; ++f) {
+    x = admitgen_rt__real_f32(x, u[f], r.eps);
+    ADMITGEN_RT_EMIT_R(acc, f, tx, x, r.c);
+  }
   *r.x = x;
 }
 
-static void admitgen_rt__traj_p(float *ta, float *te, const float *u, int32_t nf, admitgen_rt__pterm p) {
+static void admitgen_rt__pass_p(float *acc, float *ta, float *te, const float *u, int32_t nf, admitgen_rt__pterm p) {
   float a = *p.xi, e = *p.eta;
   int32_t f;
+  (void)acc;
+  (void)ta;
+  (void)te;
   for (f = 0; f < nf; ++f) {
     const float a1 = admitgen_rt__xi_f32(a, e, u[f], p.er, p.pi, p.g);
-    te[f] = e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
-    ta[f] = a = a1;
+    e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
+    a = a1;
+    ADMITGEN_RT_EMIT_P(acc, f, ta, te, a, e, p.cr, p.ci);
   }
   *p.xi = a;
   *p.eta = e;
 }
 
-static void admitgen_rt__traj_rr(float *tx, float *ty, const float *u, int32_t nf, admitgen_rt__rterm r,
+static void admitgen_rt__pass_rr(float *acc, float *tx, float *ty, const float *u, int32_t nf, admitgen_rt__rterm r,
                                  admitgen_rt__rterm s) {
   float x = *r.x, y = *s.x;
   int32_t f;
+  (void)acc;
+  (void)tx;
+  (void)ty;
   for (f = 0; f < nf; ++f) {
-    tx[f] = x = admitgen_rt__real_f32(x, u[f], r.eps);
-    ty[f] = y = admitgen_rt__real_f32(y, u[f], s.eps);
+    x = admitgen_rt__real_f32(x, u[f], r.eps);
+    y = admitgen_rt__real_f32(y, u[f], s.eps);
+    ADMITGEN_RT_EMIT_R(acc, f, tx, x, r.c);
+    ADMITGEN_RT_EMIT_R(acc, f, ty, y, s.c);
   }
   *r.x = x;
   *s.x = y;
 }
 
-static void admitgen_rt__traj_rp(float *tx, float *ta, float *te, const float *u, int32_t nf, admitgen_rt__rterm r,
-                                 admitgen_rt__pterm p) {
+static void admitgen_rt__pass_rp(float *acc, float *tx, float *ta, float *te, const float *u, int32_t nf,
+                                 admitgen_rt__rterm r, admitgen_rt__pterm p) {
   float x = *r.x, a = *p.xi, e = *p.eta;
   int32_t f;
+  (void)acc;
+  (void)tx;
+  (void)ta;
+  (void)te;
   for (f = 0; f < nf; ++f) {
     const float a1 = admitgen_rt__xi_f32(a, e, u[f], p.er, p.pi, p.g);
-    te[f] = e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
-    ta[f] = a = a1;
-    tx[f] = x = admitgen_rt__real_f32(x, u[f], r.eps);
+    e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
+    a = a1;
+    x = admitgen_rt__real_f32(x, u[f], r.eps);
+    ADMITGEN_RT_EMIT_R(acc, f, tx, x, r.c);
+    ADMITGEN_RT_EMIT_P(acc, f, ta, te, a, e, p.cr, p.ci);
   }
   *r.x = x;
   *p.xi = a;
   *p.eta = e;
 }
 
-static void admitgen_rt__traj_pp(float *ta, float *te, float *tb, float *th, const float *u, int32_t nf,
+static void admitgen_rt__pass_pp(float *acc, float *ta, float *te, float *tb, float *th, const float *u, int32_t nf,
                                  admitgen_rt__pterm p, admitgen_rt__pterm q) {
   float a = *p.xi, e = *p.eta, b = *q.xi, h = *q.eta;
   int32_t f;
+  (void)acc;
+  (void)ta;
+  (void)te;
+  (void)tb;
+  (void)th;
   for (f = 0; f < nf; ++f) {
     const float a1 = admitgen_rt__xi_f32(a, e, u[f], p.er, p.pi, p.g);
     const float b1 = admitgen_rt__xi_f32(b, h, u[f], q.er, q.pi, q.g);
-    te[f] = e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
-    th[f] = h = admitgen_rt__eta_f32(b, h, q.er, q.pi);
-    ta[f] = a = a1;
-    tb[f] = b = b1;
+    e = admitgen_rt__eta_f32(a, e, p.er, p.pi);
+    h = admitgen_rt__eta_f32(b, h, q.er, q.pi);
+    a = a1;
+    b = b1;
+    ADMITGEN_RT_EMIT_P(acc, f, ta, te, a, e, p.cr, p.ci);
+    ADMITGEN_RT_EMIT_P(acc, f, tb, th, b, h, q.cr, q.ci);
   }
   *p.xi = a;
   *p.eta = e;
@@ -176,32 +227,33 @@ static void admitgen_rt__traj_pp(float *ta, float *te, float *tb, float *th, con
   *q.eta = h;
 }
 
-/* Every term's recursion over nf frames, two terms per pass; trajectory j (reals in order, then xi and eta
- * of each pair) at tr + j * len. */
-static void admitgen_rt__chunk_traj(const admitgen_rt_f32 *inst, float *tr, int32_t len, const float *u, int32_t i,
-                                    int32_t nf) {
+/* Every term's recursion over nf frames, two terms per pass, in the canonical order; trajectory j (reals in
+ * order, then xi and eta of each pair) at tr + j * len (accumulator form: len 0, tr unused). */
+static void admitgen_rt__chunk_terms(const admitgen_rt_f32 *inst, float *acc, float *tr, int32_t len, const float *u,
+                                     int32_t i, int32_t nf) {
   const int32_t nr = inst->model->n_real, nt = nr + inst->model->n_pair;
   int32_t t = 0;
   for (; t + 1 < nt; t += 2) {
     float *at = tr + (size_t)(t < nr ? t : 2 * t - nr) * (size_t)len; /* trajectory of term t */
     if (t + 1 < nr)
-      admitgen_rt__traj_rr(at, at + len, u, nf, admitgen_rt__rterm_at(inst, t, i), admitgen_rt__rterm_at(inst, t + 1, i));
+      admitgen_rt__pass_rr(acc, at, at + len, u, nf, admitgen_rt__rterm_at(inst, t, i), admitgen_rt__rterm_at(inst, t + 1, i));
     else if (t < nr)
-      admitgen_rt__traj_rp(at, at + len, at + 2 * len, u, nf, admitgen_rt__rterm_at(inst, t, i),
+      admitgen_rt__pass_rp(acc, at, at + len, at + 2 * len, u, nf, admitgen_rt__rterm_at(inst, t, i),
                            admitgen_rt__pterm_at(inst, t + 1 - nr, i));
     else
-      admitgen_rt__traj_pp(at, at + len, at + 2 * len, at + 3 * len, u, nf, admitgen_rt__pterm_at(inst, t - nr, i),
+      admitgen_rt__pass_pp(acc, at, at + len, at + 2 * len, at + 3 * len, u, nf, admitgen_rt__pterm_at(inst, t - nr, i),
                            admitgen_rt__pterm_at(inst, t + 1 - nr, i));
   }
   if (t < nt) {
     float *at = tr + (size_t)(t < nr ? t : 2 * t - nr) * (size_t)len;
     if (t < nr)
-      admitgen_rt__traj_r(at, u, nf, admitgen_rt__rterm_at(inst, t, i));
+      admitgen_rt__pass_r(acc, at, u, nf, admitgen_rt__rterm_at(inst, t, i));
     else
-      admitgen_rt__traj_p(at, at + len, u, nf, admitgen_rt__pterm_at(inst, t - nr, i));
+      admitgen_rt__pass_p(acc, at, at + len, u, nf, admitgen_rt__pterm_at(inst, t - nr, i));
   }
 }
 
+#if ADMITGEN_RT_SMALLN_TRAJ
 /* Outputs of frames [f, f + w) in the canonical order, into y[f..]: one frame at a time. */
 static void admitgen_rt__out_frames(const admitgen_rt_model_f32 *m, const float *u, const float *tr, int32_t len,
                                     int32_t f, int32_t w, float *y) {
@@ -218,10 +270,9 @@ static void admitgen_rt__out_frames(const admitgen_rt_model_f32 *m, const float 
   }
 }
 
-#if defined(__GNUC__) || defined(__clang__)
 /* The same, ADMITGEN_RT_FV = 8 frames in two 4-float vectors (GCC/Clang vector extension: SSE on x86-64, NEON
- * on aarch64, plain scalar code where the target has no vectors); the same operations lane by lane. Vectors
- * are moved with memcpy (no alignment or aliasing assumption) and never passed by value (no ABI question). */
+ * on aarch64); the same operations lane by lane. Vectors are moved with memcpy (no alignment or aliasing
+ * assumption) and never passed by value (no ABI question). */
 typedef float admitgen_rt__v4 __attribute__((vector_size(16)));
 #define ADMITGEN_RT_V4_LOAD2(lo, hi, p) (__builtin_memcpy(&(lo), (p), 16), __builtin_memcpy(&(hi), (p) + 4, 16))
 static void admitgen_rt__out_vec(const admitgen_rt_model_f32 *m, const float *u, const float *tr, int32_t len, int32_t f,
@@ -255,24 +306,25 @@ static void admitgen_rt__out_vec(const admitgen_rt_model_f32 *m, const float *u,
   __builtin_memcpy(y + f, &v0, 16);
   __builtin_memcpy(y + f + 4, &v1, 16);
 }
-#else
-static void admitgen_rt__out_vec(const admitgen_rt_model_f32 *m, const float *u, const float *tr, int32_t len, int32_t f,
-                                 float *y) {
-  admitgen_rt__out_frames(m, u, tr, len, f, ADMITGEN_RT_FV, y);
-}
 #endif
 
-/* Node i, frames [f0, f0 + nf), nf <= the model's chunk length len; ub = past inputs (oldest first), then the
+/* Node i, frames [f0, f0 + nf), nf <= len (the chunk length); ub = past inputs (oldest first), then the
  * chunk's. */
 static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t stride, int32_t i,
                                    int32_t f0, int32_t nf, int32_t len) {
   const admitgen_rt_model_f32 *m = inst->model;
   const size_t n = (size_t)inst->n_nodes;
   const int32_t rows = m->n_fir > 1 ? m->n_fir - 1 : 0;
-  float ub[ADMITGEN_RT_MAX_TERMS + ADMITGEN_RT_CHUNK], tr[ADMITGEN_RT_TRAJ];
+  float ub[ADMITGEN_RT_MAX_TERMS + ADMITGEN_RT_CHUNK];
+#if ADMITGEN_RT_SMALLN_TRAJ
+  float tr[ADMITGEN_RT_TRAJ];
   /* mono: straight into the output; else into the first trajectory (tr has room for len frames), whose frame f
    * the output pass reads before it writes output frame f */
   float *y = pOut != NULL && stride == 1 ? pOut + f0 : tr;
+#else
+  float y[ADMITGEN_RT_CHUNK];
+  const float d0 = m->n_fir > 0 ? m->fir[0] : 0.0f;
+#endif
   const float *u = ub + rows;
   int32_t f, k;
   for (k = 1; k <= rows; ++k) ub[rows - k] = inst->hist[(size_t)admitgen_rt__ring_row(inst->head, k, rows) * n + (size_t)i];
@@ -280,11 +332,22 @@ static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, floa
     for (f = 0; f < nf; ++f) ub[rows + f] = pIn[f0 + f];
   else
     for (f = 0; f < nf; ++f) ub[rows + f] = pIn[(size_t)(f0 + f) * (size_t)stride + (size_t)i];
-  admitgen_rt__chunk_traj(inst, tr, len, u, i, nf);
+#if ADMITGEN_RT_SMALLN_TRAJ
+  admitgen_rt__chunk_terms(inst, NULL, tr, len, u, i, nf);
   for (f = 0; f + ADMITGEN_RT_FV <= nf; f += ADMITGEN_RT_FV) admitgen_rt__out_vec(m, u, tr, len, f, y);
   if (f < nf) admitgen_rt__out_frames(m, u, tr, len, f, nf - f, y);
   if (pOut != NULL && y == tr)
-    for (f = 0; f < nf; ++f) pOut[(size_t)(f0 + f) * (size_t)stride + (size_t)i] = tr[f];
+#else
+  (void)len;
+  for (f = 0; f < nf; ++f) y[f] = d0 * u[f];
+  for (k = 1; k < m->n_fir; ++k) {
+    const float d = m->fir[k];
+    for (f = 0; f < nf; ++f) y[f] += d * u[f - k];
+  }
+  admitgen_rt__chunk_terms(inst, y, y, 0, u, i, nf);
+  if (pOut != NULL)
+#endif
+    for (f = 0; f < nf; ++f) pOut[(size_t)(f0 + f) * (size_t)stride + (size_t)i] = y[f];
   if (rows > 0) {
     const int32_t new_head = admitgen_rt__ring_advance(inst->head, nf, rows);
     for (k = 1; k <= rows; ++k) inst->hist[(size_t)admitgen_rt__ring_row(new_head, k, rows) * n + (size_t)i] = u[nf - k];
@@ -307,7 +370,7 @@ void admitgen_rt__process_f32_isa(admitgen_rt_f32 *inst, const float *pIn, float
                                   int32_t stride, int isa) {
   const int32_t rows = inst->model->n_fir - 1;
   int32_t f;
-  const int32_t states = inst->model->n_real + 2 * inst->model->n_pair;
+  const int32_t states = ADMITGEN_RT_SMALLN_TRAJ ? inst->model->n_real + 2 * inst->model->n_pair : 0;
   if (inst->n_nodes <= ADMITGEN_RT_SMALL_N && states <= ADMITGEN_RT_TRAJ) { /* (beyond: the block path) */
     int32_t len = ADMITGEN_RT_CHUNK; /* frames per chunk: as many as the trajectories have room for */
     while (len * states > ADMITGEN_RT_TRAJ) len /= 2;
