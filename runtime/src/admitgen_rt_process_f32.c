@@ -88,6 +88,13 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
 #endif
 #endif
 
+/* Inlined into each caller (the chunk body is instantiated twice: admitgen_rt__chunk_f32). */
+#if defined(__GNUC__) || defined(__clang__)
+#define ADMITGEN_RT_INLINE static inline __attribute__((always_inline))
+#else
+#define ADMITGEN_RT_INLINE static inline
+#endif
+
 /* Trajectory floats per chunk (stack): a chunk has ADMITGEN_RT_CHUNK frames while the model has at most 4
  * states (Q1S1, Q0S2, ...), half as many up to 8 states, and so on; a model of more states than this (at most
  * 3 ADMITGEN_RT_MAX_TERMS) runs on the block path. */
@@ -229,8 +236,8 @@ static void admitgen_rt__pass_pp(float *acc, float *ta, float *te, float *tb, fl
 
 /* Every term's recursion over nf frames, two terms per pass, in the canonical order; trajectory j (reals in
  * order, then xi and eta of each pair) at tr + j * len (accumulator form: len 0, tr unused). */
-static void admitgen_rt__chunk_terms(const admitgen_rt_f32 *inst, float *acc, float *tr, int32_t len, const float *u,
-                                     int32_t i, int32_t nf) {
+ADMITGEN_RT_INLINE void admitgen_rt__chunk_terms(const admitgen_rt_f32 *inst, float *acc, float *tr, int32_t len,
+                                                 const float *u, int32_t i, int32_t nf) {
   const int32_t nr = inst->model->n_real, nt = nr + inst->model->n_pair;
   int32_t t = 0;
   for (; t + 1 < nt; t += 2) {
@@ -310,8 +317,8 @@ static void admitgen_rt__out_vec(const admitgen_rt_model_f32 *m, const float *u,
 
 /* Node i, frames [f0, f0 + nf), nf <= len (the chunk length); ub = past inputs (oldest first), then the
  * chunk's. */
-static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t stride, int32_t i,
-                                   int32_t f0, int32_t nf, int32_t len) {
+ADMITGEN_RT_INLINE void admitgen_rt__chunk_body(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t stride,
+                                                int32_t i, int32_t f0, int32_t nf, int32_t len) {
   const admitgen_rt_model_f32 *m = inst->model;
   const size_t n = (size_t)inst->n_nodes;
   const int32_t rows = m->n_fir > 1 ? m->n_fir - 1 : 0;
@@ -352,6 +359,26 @@ static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, floa
     const int32_t new_head = admitgen_rt__ring_advance(inst->head, nf, rows);
     for (k = 1; k <= rows; ++k) inst->hist[(size_t)admitgen_rt__ring_row(new_head, k, rows) * n + (size_t)i] = u[nf - k];
   }
+}
+
+#if ADMITGEN_RT_SMALLN_TRAJ
+/* The chunk body compiled twice: for full chunks of ADMITGEN_RT_CHUNK frames (the common case: every loop
+ * bound a constant) and for any other chunk (desktop targets; an MCU keeps one copy). */
+static void admitgen_rt__chunk_full(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t stride, int32_t i,
+                                    int32_t f0) {
+  admitgen_rt__chunk_body(inst, pIn, pOut, stride, i, f0, ADMITGEN_RT_CHUNK, ADMITGEN_RT_CHUNK);
+}
+#endif
+
+static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, float *pOut, int32_t stride, int32_t i,
+                                   int32_t f0, int32_t nf, int32_t len) {
+#if ADMITGEN_RT_SMALLN_TRAJ
+  if (nf == ADMITGEN_RT_CHUNK && len == ADMITGEN_RT_CHUNK) {
+    admitgen_rt__chunk_full(inst, pIn, pOut, stride, i, f0);
+    return;
+  }
+#endif
+  admitgen_rt__chunk_body(inst, pIn, pOut, stride, i, f0, nf, len);
 }
 
 /* One frame over every node: AVX-512 and AVX2 blocks first when the CPU has them, the generic pass for the rest. */
