@@ -173,13 +173,15 @@ static void f32_accuracy(void) {
   RT_CHECK(worst <= bound, "f32 error %.3g above the bound %.3g", worst, bound);
 }
 
-/* Models of many states: the small-n path shortens its chunks (and beyond ADMITGEN_RT_TRAJ states hands over to
- * the block path); 1 node in two calls must equal node 3 of 9 in one call, bit for bit, at 60 real poles and
- * 0..64 pairs (60..188 states). Synthetic stable coefficients, |z| < 1. */
+/* Models of every shape: no term, one real pole, one pair, and many states (the small-n path shortens its
+ * chunks, and beyond ADMITGEN_RT_TRAJ states hands over to the block path); each combination of last recursion
+ * pass (none, r, p, rr, rp, pp). 1 node in two calls must equal node 3 of 9 in one call, bit for bit.
+ * Synthetic stable coefficients, |z| < 1. */
 static void f32_many_states(void) {
+  static const int32_t shapes[10][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {59, 0}, {60, 1}, {60, 16}, {60, 64}};
   static float fir[6] = {0.5f, 0.1f, 0.05f, 0.02f, 0.01f, 0.005f}, real[2 * 60], pair[5 * 64];
   static float in9[300 * 9], out9[300 * 9];
-  int32_t t, f, np;
+  int32_t t, f, sh;
   for (t = 0; t < 60; ++t) {
     real[2 * t] = 0.01f * (float)(t + 1) / 60.0f;
     real[2 * t + 1] = 0.01f;
@@ -192,22 +194,23 @@ static void f32_many_states(void) {
     pair[5 * t + 4] = 0.005f;
   }
   for (f = 0; f < 300 * 9; ++f) in9[f] = INPUT((f * 7) % N_GOLD);
-  for (np = 0; np <= 64; np += 16) {
-    const admitgen_rt_model_f32 m = {ADMITGEN_RT_ABI_VERSION, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, 6, 60, np, 0.5f,
+  for (sh = 0; sh < 10; ++sh) {
+    const int32_t nr = shapes[sh][0], np = shapes[sh][1];
+    const admitgen_rt_model_f32 m = {ADMITGEN_RT_ABI_VERSION, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, 6, nr, np, 0.5f,
                                      fir, real, pair};
     admitgen_rt_f32 nine, one;
     int32_t bad = 0;
     RT_CHECK(admitgen_rt_init_f32(&nine, &m, 48000, 9, rt_slot(0), SLOT_BYTES) == ADMITGEN_RT_SUCCESS &&
                  admitgen_rt_init_f32(&one, &m, 48000, 1, rt_slot(1), SLOT_BYTES) == ADMITGEN_RT_SUCCESS,
-             "init of the %ld-pair model", (long)np);
+             "init of the %ld-real, %ld-pair model", (long)nr, (long)np);
     (void)admitgen_rt_process_f32(&nine, in9, out9, 300, 9);
     for (f = 0; f < 300; ++f) in_f32[f] = in9[f * 9 + 3];
     (void)admitgen_rt_process_f32(&one, in_f32, out_a_f32, 77, 1);
     (void)admitgen_rt_process_f32(&one, in_f32 + 77, out_a_f32 + 77, 223, 1);
     for (f = 0; f < 300; ++f) bad += out_a_f32[f] != out9[f * 9 + 3];
-    RT_CHECK(bad == 0, "60 reals, %ld pairs: 1 node differs from node 3 of 9 in %ld frames", (long)np, (long)bad);
+    RT_CHECK(bad == 0, "%ld reals, %ld pairs: 1 node differs from node 3 of 9 in %ld frames", (long)nr, (long)np, (long)bad);
   }
-  printf("f32: 60 real poles and 0..64 pairs: 1 node (small-n path, short chunks or block path) = node 3 of 9\n");
+  printf("f32: Q0S0 to Q60S64 (every last recursion pass; short chunks; block path): 1 node = node 3 of 9\n");
 }
 #undef RT_FIXED
 #endif
