@@ -92,8 +92,8 @@ static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) {
 /* ------------------------------------------------------------------------------------------------ */
 /* Kernel organisation (docs/runtime.md):
  *  - small-n path (n_nodes <= ADMITGEN_RT_SMALL_N): per node, frames inside each term (CMSIS-DSP biquad
- *    style): a term's state stays in a register across a chunk of ADMITGEN_RT_CHUNK frames whose
- *    accumulators sit in a stack array;
+ *    style): a term's state stays in a register across a chunk of frames whose accumulators (f32 on vector
+ *    targets: state trajectories) sit in a stack array;
  *  - block path: per frame, one fused pass over a block of nodes updates every term with the block's
  *    accumulators in registers; SIMD kernels (AVX2 on x86-64, selected at run time; NEON on aarch64)
  *    process whole vector blocks and the scalar kernel the remainder.
@@ -102,7 +102,8 @@ static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) {
  * FP_CONTRACT is on, which C99 mode leaves off in GCC), so they are bit-identical too. */
 #define ADMITGEN_RT_SMALL_N 8
 /* Frames per chunk of the small-n path; its stack arrays hold 64 + CHUNK inputs and CHUNK accumulators
- * (about 0.9 KiB for the fixed formats at 32 on Cortex-M4): define smaller for a tight MCU stack. */
+ * (about 0.8 KiB for the fixed formats at 32 on Cortex-M4): define smaller for a tight MCU stack. (The f32
+ * path on vector targets has its own, ADMITGEN_RT_FCHUNK: admitgen_rt_process_f32.c.) */
 #ifndef ADMITGEN_RT_CHUNK
 #define ADMITGEN_RT_CHUNK 32
 #endif

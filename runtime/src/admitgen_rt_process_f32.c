@@ -10,8 +10,8 @@
  * p = e^{-lambda T} would carry only 2^-24/(lambda T) relative precision in 1 - p).
  *
  * Paths: up to ADMITGEN_RT_SMALL_N nodes, frames inside each term (terms two at a time, so that their
- * recursions overlap: the mono path is bound by their latency); more nodes, one fused pass per frame over
- * blocks of nodes (AVX2 intrinsics when the CPU has them: admitgen_rt_avx2.c).
+ * recursions overlap: the mono path is bound by their latency; two forms, below); more nodes, one fused pass
+ * per frame over blocks of nodes (AVX2 or AVX-512 intrinsics when the CPU has them: admitgen_rt_avx2.c).
  */
 #include "admitgen_rt_internal.h"
 
