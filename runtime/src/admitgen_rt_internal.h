@@ -211,9 +211,9 @@ void admitgen_rt__qblock_avx2(const admitgen_rt__qtab *t, const admitgen_rt__qst
 void admitgen_rt__qblock_avx512(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
                                 size_t base, size_t b, int32_t new_head, int commit);
 /* Float fused pass of one frame over nodes [i0, n - (n - i0) % 32) (same operations as the generic pass);
- * returns the end. AVX-512: nodes [0, n - n % 64). */
+ * returns the end. AVX-512: blocks of 64 instead of 32. */
 int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int32_t i0, int commit);
-int32_t admitgen_rt__frame_f32_avx512(const admitgen_rt_f32 *inst, const float *in, float *out, int commit);
+int32_t admitgen_rt__frame_f32_avx512(const admitgen_rt_f32 *inst, const float *in, float *out, int32_t i0, int commit);
 #endif
 #if ADMITGEN_RT_HAVE_NEON
 #define ADMITGEN_RT_QVEC 4

@@ -489,7 +489,7 @@ static void admitgen_rt__chunk_f32(admitgen_rt_f32 *inst, const float *pIn, floa
 static void admitgen_rt__frame_f32(const admitgen_rt_f32 *inst, const float *in, float *out, int commit, int simd) {
   int32_t done = 0;
 #if ADMITGEN_RT_HAVE_AVX2
-  if (simd == 2) done = admitgen_rt__frame_f32_avx512(inst, in, out, commit);
+  if (simd == 2) done = admitgen_rt__frame_f32_avx512(inst, in, out, 0, commit);
   if (simd) done = admitgen_rt__frame_f32_avx2(inst, in, out, done, commit);
 #else
   (void)simd;
