@@ -11,8 +11,8 @@
  * state, saturation and the round-half-up output then follow the scalar definitions
  * (admitgen_rt__add_tz, admitgen_rt__output) operation for operation: the results are bit-identical.
  * AVX-512: 16 nodes per block with native 64-bit shifts, min/max and masks (same results).
- * Float: the operations of the generic fused frame pass (admitgen_rt_process_f32.c) in the same order, without
- * FMA (which would round differently): bit-identical too.
+ * Float (admitgen_rt_fblock_x86.h, AVX2 and AVX-512): the operations of the generic fused frame pass
+ * (admitgen_rt_process_f32.c) in the same order, without FMA (which would round differently): bit-identical too.
  */
 #include "admitgen_rt_internal.h"
 
@@ -25,75 +25,16 @@
 #endif
 #include <immintrin.h>
 
-/* ---- float: 32 nodes per block (four vectors), the operations of admitgen_rt__frame_f32_generic in its order */
-
-static inline __m256 admitgen_rt__vreal(__m256 x, __m256 u, __m256 eps) {
-  return _mm256_add_ps(x, _mm256_mul_ps(eps, _mm256_sub_ps(u, x)));
-}
-
-/* Vectors of 8 floats per block: 4 (32 nodes) keeps 8 of the 16 registers for inputs and accumulators and
- * gives the two multiply and two add pipes independent work (measured: 2 vectors 0.52, 4 vectors 0.39
- * ns/node-sample, 6 spill). */
-#define ADMITGEN_RT_FVH 4
-static void admitgen_rt__fblock_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, size_t b, int32_t new_head,
-                                     int commit) {
-  const admitgen_rt_model_f32 *m = inst->model;
-  const size_t n = (size_t)inst->n_nodes;
-  const int32_t rows = m->n_fir - 1;
-  __m256 u[ADMITGEN_RT_FVH], acc[ADMITGEN_RT_FVH];
-  int32_t h, k, t;
-  for (h = 0; h < ADMITGEN_RT_FVH; ++h) {
-    u[h] = in != NULL ? _mm256_loadu_ps(in + b + 8 * h) : _mm256_setzero_ps();
-    acc[h] = _mm256_mul_ps(_mm256_set1_ps(m->n_fir > 0 ? m->fir[0] : 0.0f), u[h]);
-  }
-  for (k = 1; k < m->n_fir; ++k) {
-    const __m256 d = _mm256_set1_ps(m->fir[k]);
-    const float *row = inst->hist + (size_t)admitgen_rt__ring_row(inst->head, k, rows) * n + b;
-    for (h = 0; h < ADMITGEN_RT_FVH; ++h) acc[h] = _mm256_add_ps(acc[h], _mm256_mul_ps(d, _mm256_loadu_ps(row + 8 * h)));
-  }
-  for (t = 0; t < m->n_real; ++t) {
-    const __m256 eps = _mm256_set1_ps(m->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_EPS]);
-    const __m256 c = _mm256_set1_ps(m->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_C]);
-    float *x = inst->x + (size_t)t * n + b;
-    for (h = 0; h < ADMITGEN_RT_FVH; ++h) {
-      const __m256 v = admitgen_rt__vreal(_mm256_loadu_ps(x + 8 * h), u[h], eps);
-      if (commit) _mm256_storeu_ps(x + 8 * h, v);
-      acc[h] = _mm256_add_ps(acc[h], _mm256_mul_ps(c, v));
-    }
-  }
-  for (t = 0; t < m->n_pair; ++t) {
-    const float *p = m->pair + ADMITGEN_RT_F32_PAIR_WIDTH * t;
-    const __m256 er = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_ER]), pi = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_PI]), g = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_G]);
-    const __m256 cr = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_CR]), ci = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_CI]);
-    float *xi = inst->xi + (size_t)t * n + b, *eta = inst->eta + (size_t)t * n + b;
-    for (h = 0; h < ADMITGEN_RT_FVH; ++h) {
-      const __m256 a = _mm256_loadu_ps(xi + 8 * h), e = _mm256_loadu_ps(eta + 8 * h);
-      /* xi' = xi + (e_r xi + (g u - p_i eta));  eta' = eta + (e_r eta + p_i xi) */
-      const __m256 a1 = _mm256_add_ps(
-          a, _mm256_add_ps(_mm256_mul_ps(er, a), _mm256_sub_ps(_mm256_mul_ps(g, u[h]), _mm256_mul_ps(pi, e))));
-      const __m256 e1 = _mm256_add_ps(e, _mm256_add_ps(_mm256_mul_ps(er, e), _mm256_mul_ps(pi, a)));
-      if (commit) {
-        _mm256_storeu_ps(xi + 8 * h, a1);
-        _mm256_storeu_ps(eta + 8 * h, e1);
-      }
-      acc[h] = _mm256_add_ps(acc[h], _mm256_add_ps(_mm256_mul_ps(cr, a1), _mm256_mul_ps(ci, e1)));
-    }
-  }
-  if (out != NULL)
-    for (h = 0; h < ADMITGEN_RT_FVH; ++h) _mm256_storeu_ps(out + b + 8 * h, acc[h]);
-  if (commit && rows > 0) { /* u^n overwrites u^{n-rows}, which this block has just read */
-    float *row = inst->hist + (size_t)new_head * n + b;
-    for (h = 0; h < ADMITGEN_RT_FVH; ++h) _mm256_storeu_ps(row + 8 * h, u[h]);
-  }
-}
-
-int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int commit) {
-  const int32_t nv = inst->n_nodes - inst->n_nodes % (8 * ADMITGEN_RT_FVH), rows = inst->model->n_fir - 1;
-  const int32_t new_head = rows > 0 ? admitgen_rt__ring_advance(inst->head, 1, rows) : 0;
-  int32_t b;
-  for (b = 0; b < nv; b += 8 * ADMITGEN_RT_FVH) admitgen_rt__fblock_avx2(inst, in, out, (size_t)b, new_head, commit);
-  return nv;
-}
+/* ---- float: 32 nodes per block (four vectors of 8) ---- */
+#define ADMITGEN_RT_FT __m256
+#define ADMITGEN_RT_FW 8
+#define ADMITGEN_RT_FI(op) _mm256_##op
+#define ADMITGEN_RT_FN(name) admitgen_rt__##name##_avx2
+#include "admitgen_rt_fblock_x86.h"
+#undef ADMITGEN_RT_FT
+#undef ADMITGEN_RT_FW
+#undef ADMITGEN_RT_FI
+#undef ADMITGEN_RT_FN
 
 /* ---- fixed point ---- */
 
@@ -193,6 +134,17 @@ static inline __m256i admitgen_rt__vadd_tz_avx512(__m256i old, __m256i prod, con
 #include "admitgen_rt_qblock_x86.h"
 #undef ADMITGEN_RT_V
 #undef ADMITGEN_RT_VH
+
+/* Float, 64 nodes per block (four vectors of 16): a 512-bit vector halves the instructions per node-sample. */
+#define ADMITGEN_RT_FT __m512
+#define ADMITGEN_RT_FW 16
+#define ADMITGEN_RT_FI(op) _mm512_##op
+#define ADMITGEN_RT_FN(name) admitgen_rt__##name##_avx512
+#include "admitgen_rt_fblock_x86.h"
+#undef ADMITGEN_RT_FT
+#undef ADMITGEN_RT_FW
+#undef ADMITGEN_RT_FI
+#undef ADMITGEN_RT_FN
 #if defined(__clang__)
 #pragma clang attribute pop
 #else

@@ -82,8 +82,11 @@ admitgen_rt_result admitgen_rt__check_call(const void *model, int32_t n_nodes, c
   if (n_frames == 0) return ADMITGEN_RT_SUCCESS;
   if (in == NULL) return ADMITGEN_RT_NULL_POINTER;
   if (stride < n_nodes) return ADMITGEN_RT_BAD_STRIDE;
-  /* the last index (n_frames - 1) * stride + n_nodes - 1 must fit in size_t (32-bit targets) */
+  /* the last index (n_frames - 1) * stride + n_nodes - 1 must fit in size_t (32-bit targets; below 2^63 for
+   * int32_t operands, so a 64-bit size_t needs no test and the call no division) */
+#if SIZE_MAX < 0xFFFFFFFFFFFFFFFFu
   if ((size_t)(n_frames - 1) > (SIZE_MAX - (size_t)n_nodes) / (size_t)stride) return ADMITGEN_RT_TOO_LARGE;
+#endif
   return ADMITGEN_RT_SUCCESS;
 }
 

@@ -92,8 +92,8 @@ static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) {
 /* ------------------------------------------------------------------------------------------------ */
 /* Kernel organisation (docs/runtime.md):
  *  - small-n path (n_nodes <= ADMITGEN_RT_SMALL_N): per node, frames inside each term (CMSIS-DSP biquad
- *    style): a term's state stays in a register across a chunk of ADMITGEN_RT_CHUNK frames whose
- *    accumulators sit in a stack array;
+ *    style): a term's state stays in a register across a chunk of frames whose accumulators (f32 on vector
+ *    targets: state trajectories) sit in a stack array;
  *  - block path: per frame, one fused pass over a block of nodes updates every term with the block's
  *    accumulators in registers; SIMD kernels (AVX2 on x86-64, selected at run time; NEON on aarch64)
  *    process whole vector blocks and the scalar kernel the remainder.
@@ -102,7 +102,8 @@ static inline float admitgen_rt__eta_f32(float a, float e, float er, float pi) {
  * FP_CONTRACT is on, which C99 mode leaves off in GCC), so they are bit-identical too. */
 #define ADMITGEN_RT_SMALL_N 8
 /* Frames per chunk of the small-n path; its stack arrays hold 64 + CHUNK inputs and CHUNK accumulators
- * (about 0.9 KiB for the fixed formats at 32 on Cortex-M4): define smaller for a tight MCU stack. */
+ * (about 0.8 KiB for the fixed formats at 32 on Cortex-M4): define smaller for a tight MCU stack. (The f32
+ * path on vector targets has its own, ADMITGEN_RT_FCHUNK: admitgen_rt_process_f32.c.) */
 #ifndef ADMITGEN_RT_CHUNK
 #define ADMITGEN_RT_CHUNK 32
 #endif
@@ -214,9 +215,10 @@ void admitgen_rt__qblock_avx2(const admitgen_rt__qtab *t, const admitgen_rt__qst
 #define ADMITGEN_RT_QVEC_AVX512 16
 void admitgen_rt__qblock_avx512(const admitgen_rt__qtab *t, const admitgen_rt__qstate *st, const admitgen_rt__qio *io,
                                 size_t base, size_t b, int32_t new_head, int commit);
-/* Float fused pass of one frame over nodes [0, n - n % 32) (same operations as the generic pass); returns
- * that count. */
-int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int commit);
+/* Float fused pass of one frame over nodes [i0, n - (n - i0) % 32) (same operations as the generic pass);
+ * returns the end. AVX-512: blocks of 64 instead of 32. */
+int32_t admitgen_rt__frame_f32_avx2(const admitgen_rt_f32 *inst, const float *in, float *out, int32_t i0, int commit);
+int32_t admitgen_rt__frame_f32_avx512(const admitgen_rt_f32 *inst, const float *in, float *out, int32_t i0, int commit);
 #endif
 #if ADMITGEN_RT_HAVE_NEON
 #define ADMITGEN_RT_QVEC 4

@@ -9,8 +9,9 @@
 #   cortex-m4-fpu the same with -mfloat-abi=hard -mfpu=fpv4-sp-d16 (f32)
 
 set(CROSS_DIR ${CMAKE_CURRENT_LIST_DIR})
+# -ffunction-sections: cross_print_figures links with --gc-sections to measure the code a program really uses.
 set(CROSS_STRICT -std=c99 -O2 -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wcast-qual -Wundef -Wshadow
-                 -Werror)
+                 -Werror -ffunction-sections -fdata-sections)
 
 # Sets <prefix>_CC, <prefix>_FLAGS (compile), <prefix>_LINK (extra link arguments), <prefix>_RUN (emulator
 # command) and <prefix>_MISSING (names of absent tools, empty if all present) for a target.
@@ -108,4 +109,76 @@ function(cross_run prefix exe out_var rc_var)
   execute_process(COMMAND ${cmd} TIMEOUT 240 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   set(${out_var} "${out}" PARENT_SCOPE)
   set(${rc_var} "${rc}" PARENT_SCOPE)
+endfunction()
+
+# Counts the guest instructions a program executes: QEMU translates one instruction per block (-singlestep) and
+# logs every block it executes (-d exec,nochain; Debian's QEMU ships no TCG plugins) to a file whose lines are
+# counted, then removed. (Not -D /dev/stdout piped to grep: in one run QEMU left a regular log file in place of
+# the /dev/stdout link.)
+function(cross_count_instructions prefix exe out_var)
+  cross_run(${prefix} ${exe} out rc -singlestep -d exec,nochain -D ${exe}.log)
+  execute_process(COMMAND grep -c "^Trace" ${exe}.log OUTPUT_VARIABLE n OUTPUT_STRIP_TRAILING_WHITESPACE)
+  file(REMOVE ${exe}.log)
+  if(NOT n MATCHES "^[1-9][0-9]*$")
+    message(FATAL_ERROR "${exe}: counting under QEMU failed (exit status ${rc}, '${n}' instructions)")
+  endif()
+  set(${out_var} ${n} PARENT_SCOPE)
+endfunction()
+
+# Prints, per format of <formats> (f32, q31, q15), the figures of docs/runtime.md for one target: the .text
+# bytes of the runtime functions a program of that format links (--gc-sections; libgcc helpers not included,
+# the "calls" column names them), and the instructions per node-sample QEMU executes for 1 node (small-n path,
+# 32 frames per call) and 64 nodes (block path, 1 frame per call). Two builds of rt_count.c differing only in
+# the frame count cancel start-up, I/O and exit: (count(2F) - count(F)) / (F nodes). Printed, not asserted.
+# Extra arguments: include flags for rt_count.c (the emitted headers and rt_golden.h).
+function(cross_print_figures prefix target formats work objects)
+  string(REGEX REPLACE "gcc$" "nm" nm ${${prefix}_CC})
+  message("${target}: format  .text B  instructions per node-sample: 1 node / 64 nodes    external calls")
+  foreach(name IN LISTS formats)
+    set(all_formats f32 q31 q15)
+    list(FIND all_formats ${name} idx)
+    math(EXPR fmt "${idx} + 1")
+    set(counts "")
+    foreach(nodes 1 64)
+      if(nodes EQUAL 1)
+        set(frames 512)
+      else()
+        set(frames 32)
+      endif()
+      math(EXPR frames2 "2 * ${frames}")
+      foreach(fr ${frames} ${frames2})
+        set(exe ${work}/count_${name}_${nodes}_${fr})
+        cross_link(${prefix} ${exe} ${CROSS_DIR}/rt_count.c "${objects}" ${ARGN} -DRT_FORMAT=${fmt} -DRT_NODES=${nodes}
+                   -DRT_FRAMES=${fr} -Wl,--gc-sections)
+        cross_count_instructions(${prefix} ${exe} n_${fr})
+      endforeach()
+      math(EXPR diff "${n_${frames2}} - ${n_${frames}}")
+      math(EXPR per "${diff} / (${frames} * ${nodes})")
+      math(EXPR frac "(${diff} * 10 / (${frames} * ${nodes})) % 10")
+      list(APPEND counts "${per}.${frac}")
+    endforeach()
+    execute_process(COMMAND ${nm} -S --defined-only ${work}/count_${name}_64_32 OUTPUT_VARIABLE syms)
+    string(REGEX MATCHALL "[0-9a-f]+ [0-9a-f]+ [tT] admitgen_rt[a-z0-9_]*" rt_syms "${syms}")
+    set(text 0)
+    foreach(sym IN LISTS rt_syms)
+      string(REGEX MATCH "^[0-9a-f]+ ([0-9a-f]+)" _ "${sym}")
+      math(EXPR text "${text} + 0x${CMAKE_MATCH_1}")
+    endforeach()
+    # undefined symbols of the runtime objects this format uses: only compiler support routines, no libm/heap
+    set(fmt_objects ${objects})
+    if(name STREQUAL "f32")
+      list(FILTER fmt_objects EXCLUDE REGEX "_q31|_q15|_fixed")
+    else()
+      list(FILTER fmt_objects EXCLUDE REGEX "_f32|_avx2")
+    endif()
+    execute_process(COMMAND ${nm} -u ${fmt_objects} OUTPUT_VARIABLE undef)
+    string(REGEX MATCHALL "U [A-Za-z0-9_]+" undef "${undef}")
+    list(REMOVE_DUPLICATES undef)
+    list(FILTER undef EXCLUDE REGEX "admitgen_rt")
+    string(REPLACE "U " "" undef "${undef}")
+    string(JOIN "," undef ${undef})
+    list(GET counts 0 c1)
+    list(GET counts 1 c64)
+    message("${target}: ${name}     ${text}    ${c1} / ${c64}    ${undef}")
+  endforeach()
 endfunction()

@@ -1,32 +1,16 @@
 # SPDX-License-Identifier: MIT
-# cross_figures.cmake - per target: .text bytes of the runtime code a program of one format links, and the
-# instructions per node-sample QEMU executes, for 1 node (small-n path) and 64 nodes (block path). Printed,
-# not asserted (figures of docs/runtime.md; the bench target admitgen_rt_cross_figures runs this).
+# cross_figures.cmake - the figures of docs/runtime.md for every cross target (cross_print_figures in
+# cross_common.cmake): .text bytes per format and instructions per node-sample counted by QEMU. Each
+# runtime_c.cross_* test prints its own target's; the bench target admitgen_rt_cross_figures runs this for all.
 #   cmake -DSRC_DIR=<repo> -DWORK=<dir> -DINCLUDES=<dir|dir|...> -P cross_figures.cmake
-# Counting: QEMU translates one guest instruction per block (-singlestep) and logs every block it executes
-# (-d exec,nochain; Debian's QEMU ships no TCG plugins), so the number of "Trace" lines is the number of
-# instructions executed. Two builds of rt_count.c differing only in the frame count cancel start-up, I/O and
-# exit: (count(2F) - count(F)) / (F nodes).
-# .text: the runtime is compiled with -ffunction-sections and linked with --gc-sections; the sum of the sizes
-# of the admitgen_rt* functions left in the program (libgcc helpers such as 64-bit shifts on 32-bit ARM are
-# not included; the "calls" column names them).
 include(${CMAKE_CURRENT_LIST_DIR}/cross_common.cmake)
-set(CROSS_STRICT ${CROSS_STRICT} -ffunction-sections -fdata-sections)
 string(REPLACE "|" ";" include_dirs "${INCLUDES}")
 set(incs -I${SRC_DIR}/runtime/include)
 foreach(d IN LISTS include_dirs)
   list(APPEND incs -I${d})
 endforeach()
 
-function(count_trace prefix exe out_var)
-  cross_run(${prefix} ${exe} out rc -singlestep -d exec,nochain -D ${exe}.log)
-  execute_process(COMMAND grep -c "^Trace" ${exe}.log OUTPUT_VARIABLE n OUTPUT_STRIP_TRAILING_WHITESPACE)
-  file(REMOVE ${exe}.log)
-  set(${out_var} ${n} PARENT_SCOPE)
-endfunction()
-
-message("target         format  .text B  instructions per node-sample: 1 node / 64 nodes    external calls")
-foreach(spec "aarch64:1,2,3" "armhf:1,2,3" "cortex-m4:2,3" "cortex-m4-fpu:1")
+foreach(spec "aarch64:f32,q31,q15" "armhf:f32,q31,q15" "cortex-m4:q31,q15" "cortex-m4-fpu:f32")
   string(REPLACE ":" ";" spec "${spec}")
   list(GET spec 0 target)
   list(GET spec 1 formats)
@@ -36,62 +20,8 @@ foreach(spec "aarch64:1,2,3" "armhf:1,2,3" "cortex-m4:2,3" "cortex-m4-fpu:1")
     message("${target}: skipped, not installed: ${X_MISSING}")
     continue()
   endif()
-  string(REGEX REPLACE "gcc$" "nm" nm ${X_CC})
   set(work ${WORK}/${target})
   file(REMOVE_RECURSE ${work})
   cross_compile_runtime(X ${SRC_DIR} ${work} objects)
-  foreach(fmt IN LISTS formats)
-    math(EXPR idx "${fmt} - 1")
-    set(names f32 q31 q15)
-    list(GET names ${idx} name)
-    set(counts "")
-    set(text "")
-    set(calls "")
-    foreach(nodes 1 64)
-      if(nodes EQUAL 1)
-        set(frames 512)
-      else()
-        set(frames 32)
-      endif()
-      math(EXPR frames2 "2 * ${frames}")
-      foreach(fr ${frames} ${frames2})
-        cross_link(X ${work}/count_${name}_${nodes}_${fr} ${CROSS_DIR}/rt_count.c "${objects}" ${incs} -DRT_FORMAT=${fmt}
-                   -DRT_NODES=${nodes} -DRT_FRAMES=${fr} -Wl,--gc-sections)
-        count_trace(X ${work}/count_${name}_${nodes}_${fr} n_${fr})
-      endforeach()
-      math(EXPR diff "${n_${frames2}} - ${n_${frames}}")
-      math(EXPR per "${diff} / (${frames} * ${nodes})")
-      math(EXPR frac "(${diff} * 10 / (${frames} * ${nodes})) % 10")
-      list(APPEND counts "${per}.${frac}")
-      if(nodes EQUAL 64)
-        execute_process(COMMAND ${nm} -S --defined-only ${work}/count_${name}_${nodes}_${frames}
-                        OUTPUT_VARIABLE syms)
-        string(REGEX MATCHALL "[0-9a-f]+ [0-9a-f]+ [tT] admitgen_rt[a-z0-9_]*" rt_syms "${syms}")
-        set(bytes 0)
-        foreach(s IN LISTS rt_syms)
-          string(REGEX MATCH "^[0-9a-f]+ ([0-9a-f]+)" _ "${s}")
-          math(EXPR bytes "${bytes} + 0x${CMAKE_MATCH_1}")
-        endforeach()
-        set(text ${bytes})
-      endif()
-    endforeach()
-    # undefined symbols of the runtime objects this format uses: only compiler support routines, no libm/heap
-    set(fmt_objects ${objects})
-    if(name STREQUAL "f32")
-      list(FILTER fmt_objects EXCLUDE REGEX "_q31|_q15|_fixed")
-    else()
-      list(FILTER fmt_objects EXCLUDE REGEX "_f32|_avx2")
-    endif()
-    execute_process(COMMAND ${nm} -u ${fmt_objects} OUTPUT_VARIABLE undef)
-    string(REGEX MATCHALL "U [A-Za-z0-9_]+" undef "${undef}")
-    list(REMOVE_DUPLICATES undef)
-    list(FILTER undef EXCLUDE REGEX "admitgen_rt")
-    string(REPLACE "U " "" undef "${undef}")
-    string(JOIN "," undef ${undef})
-    list(GET counts 0 c1)
-    list(GET counts 1 c64)
-    string(JOIN "" line "${target}                " )
-    string(SUBSTRING "${line}" 0 15 line)
-    message("${line}${name}     ${text}    ${c1} / ${c64}    ${undef}")
-  endforeach()
+  cross_print_figures(X ${target} "${formats}" ${work} "${objects}" ${incs})
 endforeach()

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # run_cross_test.cmake - CTest driver: builds the runtime and tests/runtime_c/rt_bitexact.c (armhf: also rt_misuse.c) for one target
 # with its Debian cross toolchain and runs it under QEMU (cross_common.cmake). Passes when the program exits 0
-# and prints "PASS (0 failures)". Without the toolchain or QEMU it prints ADMITGEN_CROSS_SKIPPED (CTest marks
+# and prints "PASS (0 failures)"; then prints the target's .text bytes and QEMU instruction counts per format. Without the toolchain or QEMU it prints ADMITGEN_CROSS_SKIPPED (CTest marks
 # the test skipped) and names the packages; .ci/install-deps installs them.
 #   cmake -DTARGET=<target> -DSRC_DIR=<repo> -DWORK=<dir> -DINCLUDES=<dir|dir|...> -DFORMATS=<fixed|f32|all>
 #         -P run_cross_test.cmake
@@ -35,6 +35,14 @@ message("${TARGET} (${X_CC} ${flags} -O2):\n${out}")
 if(NOT rc EQUAL 0 OR NOT out MATCHES "PASS \\(0 failures\\)")
   message(FATAL_ERROR "${TARGET}: the runtime proof failed (exit status ${rc})")
 endif()
+# The target's figures (docs/runtime.md, "Embedded targets"): .text bytes and QEMU instruction counts.
+set(figure_formats f32 q31 q15)
+if(FORMATS STREQUAL "fixed")
+  set(figure_formats q31 q15)
+elseif(FORMATS STREQUAL "f32")
+  set(figure_formats f32)
+endif()
+cross_print_figures(X ${TARGET} "${figure_formats}" ${WORK} "${objects}" -I${SRC_DIR}/runtime/include ${args})
 # Limits and misuse (tests/runtime_c/rt_misuse.c) where size_t has 32 bits: the state size of 64 pairs at
 # ADMITGEN_RT_MAX_NODES nodes overflows it, and init must say ADMITGEN_RT_TOO_LARGE.
 string(COMPARE EQUAL "${TARGET}" armhf is_armhf)  # (if(TARGET ...) would test for a CMake target)
