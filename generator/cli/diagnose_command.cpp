@@ -4,6 +4,7 @@
 #include "codegen/coefficients.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "diagnosis/diagnosis_json.hpp"
 #include "output/fit_reader.hpp"
@@ -42,9 +43,10 @@ DiagnosisRequest to_request(const DiagnoseOptions& o) {
   if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
   DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(o.temperature)), tube, {},
                      std::nullopt};
-  r.sampler.live = o.live;
-  r.sampler.dlogz = o.dlogz;
-  r.sampler.seed = o.seed;
+  r.settings.sampler.live = o.live;
+  r.settings.sampler.dlogz = o.dlogz;
+  r.settings.sampler.seed = o.seed;
+  r.settings.threads = o.threads;
   if (o.fs) r.stages = StageRequest{read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
   return r;
 }
@@ -62,8 +64,8 @@ void print_summary(const Diagnosis& d, const std::string& path) {
   for (const auto& e : d.identification.effects) {
     std::string params;
     for (const auto& p : e.parameters) params += fmt::format(" {}={:.4g}±{:.2g}", p.name, p.mean, p.std);
-    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}\n", e.name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
-               params);
+    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}{}\n", e.name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
+               params, e.stopped_early ? "  (stopped early: far below the leader)" : "");
   }
   const Verdict& v = d.verdict;
   fmt::print("verdict: {} (BF {:.1f} dB, shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}\nwrote {}\n",
@@ -97,6 +99,8 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
   sub->add_option("--live", opt->live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
   sub->add_option("--dlogz", opt->dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
   sub->add_option("--seed", opt->seed, "Random seed (each effect derives its own stream)")->capture_default_str();
+  sub->add_option("--threads,-j", opt->threads, "Worker threads over candidate effects (0 = all cores); results do not depend on it")
+      ->check(CLI::Range(0, 1024))->capture_default_str();
   sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
   sub->callback([opt, sub, &exit_code] {
     opt->format_given = sub->count("--format") > 0;
@@ -107,7 +111,8 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
 int run_diagnose_command(const DiagnoseOptions& o) {
   const DiagnosisRequest request = to_request(o);
   ensure_writable_directory(o.out);
-  const Diagnosis d = run_diagnosis(request);
+  Progress progress(!o.quiet);
+  const Diagnosis d = run_diagnosis(request, progress);
   const std::string path = (std::filesystem::path(o.out) / "diagnosis.json").string();
   write_file_atomically(path, diagnosis_text(d));
   report::write_diagnosis_report(o.out, diagnosis_json(d));

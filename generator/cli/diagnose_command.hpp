@@ -34,6 +34,7 @@ struct DiagnoseOptions {
   int live = 100;
   double dlogz = 0.1;
   std::uint64_t seed = 1;
+  int threads = 0;
   bool quiet = false;
 };
 

@@ -8,8 +8,6 @@
 
 namespace admitgen {
 
-double deciban(double log_z_i, double log_z_j) { return 10.0 * (log_z_i - log_z_j) / std::log(10.0); }
-
 SelectionRule SelectionRule::parse(const std::string& text) {
   if (text == "best") return best();
   const std::string prefix = "cheapest:";

@@ -6,6 +6,8 @@
 ///                (ties broken by higher evidence) — the paper's argument for Q1S1 over Q0S2.
 #pragma once
 
+#include "inference/evidence.hpp"  // deciban
+
 #include <string>
 #include <vector>
 
@@ -28,8 +30,5 @@ class SelectionRule {
   bool cheapest_;
   double margin_db_;
 };
-
-/// Bayes factor in deciban: 10 log10(Z_i / Z_j) = 10 (ln Z_i − ln Z_j)/ln 10.
-double deciban(double log_z_i, double log_z_j);
 
 }  // namespace admitgen

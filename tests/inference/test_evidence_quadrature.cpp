@@ -76,9 +76,9 @@ NestedRun sample(const Likelihood& like, const PriorTransform& t, int live, std:
   NestedSettings s;
   s.live = live;
   s.seed = seed;
-  return run_nested_sampling(t.order().dim(), [&](const double* u, double* th) { t(u, th); },
-                             [&](const double* th) { return like(th); }, s, {},
-                             [&](double* u) { t.fold(u); });
+  const Model model{t.order().parameter_names(), [&](const double* u, double* th) { t(u, th); },
+                    [&](const double* th) { return like(th); }, [&](double* u) { t.fold(u); }};
+  return run_nested_sampling(model, s);
 }
 
 }  // namespace
