@@ -17,24 +17,27 @@
 #include <map>
 #include <mutex>
 #include <numeric>
+#include <tuple>
 
 namespace admitgen::diagnosis {
 namespace {
 
 /// Status line of the candidates: the running ones with their progress, and the time left, estimated
 /// from the elapsed time and the work done (a quadrature candidate counts 1, a sampled one 10 per
-/// parameter; a run's fraction is ln X over the ln X at which dlogz would stop it).
+/// parameter; a run's fraction is how far the logarithm of its remaining-evidence estimate has come down
+/// from its first value towards dlogz).
 class CandidateProgress {
  public:
   CandidateProgress(Progress& out, const std::vector<EffectCandidate>& candidates, double dlogz)
-      : out_(out), log_dlogz_(std::log(dlogz)), start_(std::chrono::steady_clock::now()) {
+      : out_(out), dlogz_(dlogz), start_(std::chrono::steady_clock::now()) {
     for (const auto& c : candidates) total_ += cost(c);
   }
   void running(const EffectCandidate& c, const NestedStatus& s) {
     if (!out_.enabled()) return;
     std::lock_guard<std::mutex> lock(mutex_);
-    const double end = std::min(s.log_z - s.log_l_max_live + log_dlogz_, -1e-9);
-    active_[c.name] = {cost(c), std::clamp(s.log_x / end, 0.0, 0.99)};
+    auto& [weight, first, fraction] = active_[c.name];
+    if (weight == 0.0) weight = cost(c), first = s.remaining;
+    fraction = first > dlogz_ ? std::clamp(std::log(first / s.remaining) / std::log(first / dlogz_), 0.0, 0.99) : 0.0;
     show();
   }
   void done(const EffectCandidate& c) {
@@ -52,8 +55,8 @@ class CandidateProgress {
     double work = finished_;
     std::string running;
     for (const auto& [name, a] : active_) {
-      work += a.first * a.second;
-      running += fmt::format("  {} {:.0f} %", name, 100.0 * a.second);
+      work += std::get<0>(a) * std::get<2>(a);
+      running += fmt::format("  {} {:.0f} %", name, 100.0 * std::get<2>(a));
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const double fraction = work / total_;
@@ -61,12 +64,12 @@ class CandidateProgress {
     out_.update(fmt::format("[{} candidates done{}]{}", count_, left, running));
   }
   Progress& out_;
-  double log_dlogz_;
+  double dlogz_;
   std::chrono::steady_clock::time_point start_;
   double total_ = 0.0, finished_ = 0.0;
   int count_ = 0;
   std::mutex mutex_;
-  std::map<std::string, std::pair<double, double>> active_;  ///< name → (cost, fraction done)
+  std::map<std::string, std::tuple<double, double, double>> active_;  ///< name → (cost, first remaining, fraction)
 };
 
 /// Evidence, posterior and best ϑ of one candidate from its run.

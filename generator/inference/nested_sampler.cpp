@@ -185,7 +185,7 @@ NestedRun run_nested_sampling(const Model& model, const NestedSettings& settings
     const Eigen::Index worst = compression.kill_worst(live, run);
     run.iterations = it + 1;
     const NestedStatus status = compression.status(it, live, run.calls);
-    if (progress && it % 500 == 0) progress(status);
+    if (progress && it % 100 == 0) progress(status);
     const bool converged = status.remaining < settings.dlogz;
     if (converged || (stop && stop(status))) {
       run.stopped_by = converged ? "dlogz" : "early_stop";
