@@ -95,7 +95,6 @@ Json model_json(const ModelResult& m, const Measurement& data) {
               {"likelihood_calls", m.run.calls},
               {"iterations", m.run.iterations},
               {"stopped_by", m.run.stopped_by},
-              {"seconds", m.seconds},
               {"parameters", to_json(m.parameters)},
               {"passive_estimate", passive_json(m)}};
   if (m.run.log_support_fraction != 0.0) j["log_passive_prior_fraction"] = m.run.log_support_fraction;

@@ -167,14 +167,13 @@ std::string parameter_table(const Json& fit) {
 }
 
 std::string sampler_table(const Json& fit) {
-  Table t{{"order", "live points", "likelihood calls", "iterations", "stopped by", "H [nats]", "seconds"}, {}, {1, 2, 3, 5, 6}, {}, {}};
+  Table t{{"order", "live points", "likelihood calls", "iterations", "stopped by", "H [nats]"}, {}, {1, 2, 3, 5}, {}, {}};
   const std::string selected = fit["selected"].value("order", std::string());
   for (const auto& m : fit["models"]) {
     const std::string order = m.value("order", std::string("?"));
     t.rows.push_back({escape_xml(order), std::to_string(m.value("live", fit["settings"].value("live", 0))),
                       std::to_string(m.value("likelihood_calls", 0L)), std::to_string(m.value("iterations", 0L)),
-                      escape_xml(m.value("stopped_by", std::string("?"))), fmt::format("{:.2f}", m.value("information_nats", 0.0)),
-                      fmt::format("{:.2f}", m.value("seconds", 0.0))});
+                      escape_xml(m.value("stopped_by", std::string("?"))), fmt::format("{:.2f}", m.value("information_nats", 0.0))});
     t.row_classes.push_back(order == selected ? "selected" : "");
   }
   t.caption =
