@@ -73,18 +73,15 @@ class CandidateProgress {
 };
 
 /// Evidence, posterior and best ϑ of one candidate from its run.
-void take_run(const NestedRun& run, const EffectCandidate& e, EffectResult& r) {
-  std::vector<std::string> names;
-  for (const auto& p : e.priors) names.push_back(p.name);
-  if (run.dim > 0) r.parameters = summarize(run, names);
+void take_run(const NestedRun& run, const Model& model, EffectResult& r) {
   r.log_z = run.log_z;
   r.log_z_error = run.log_z_error;
   r.max_log_likelihood = run.max_log_likelihood;
   r.calls = run.calls;
-  if (run.dim > 0) {
-    const double* p = run.point(max_likelihood_index(run));
-    r.best.assign(p, p + run.dim);
-  }
+  if (run.dim == 0) return;
+  r.parameters = summarize(run, model.parameter_names);
+  const double* p = run.point(max_likelihood_index(run));
+  r.best.assign(p, p + run.dim);
 }
 
 /// The leader every sampled candidate is held to: the best of a known floor (no effect) and the
@@ -211,7 +208,8 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
     LeaderShare share{leader};  // reports this evidence (−∞ if it throws) when it goes out of scope
     timed(i, [&](EffectResult& r) {
       r.method = candidates[i].priors.empty() ? "closed_form" : "quadrature";
-      take_run(evidence_by_quadrature(effect_model(candidates[i], likelihood), settings.quadrature), candidates[i], r);
+      const Model model = effect_model(candidates[i], likelihood);
+      take_run(evidence_by_quadrature(model, settings.quadrature), model, r);
       share.log_z = r.log_z;
     });
   };
@@ -230,9 +228,10 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
           r.log_z_bound = bound;
           return true;
         };
-      const NestedRun run = run_nested_sampling(effect_model(candidates[i], likelihood), sampler,
-                                                [&](const NestedStatus& s) { status.running(candidates[i], s); }, stop);
-      take_run(run, candidates[i], r);
+      const Model model = effect_model(candidates[i], likelihood);
+      const NestedRun run =
+          run_nested_sampling(model, sampler, [&](const NestedStatus& s) { status.running(candidates[i], s); }, stop);
+      take_run(run, model, r);
     });
   };
   const std::vector<std::size_t> queue = schedule(candidates, likelihood, cheap, sampled, settings.threads);
