@@ -2,8 +2,8 @@
 /// @file
 /// Nested sampling (Skilling 2006) with a constrained step by slice sampling along random directions
 /// whitened by the live points' covariance (as PolyChord, Handley et al. 2015, and dynesty's
-/// "rslice", Speagle 2020). The sampler knows nothing about acoustics: it takes a prior transform
-/// from the unit cube and a log-likelihood, both over flat vectors.
+/// "rslice", Speagle 2020). The sampler knows nothing about acoustics: it takes a model
+/// (inference/model.hpp), a prior transform from the unit cube and a log-likelihood over flat vectors.
 ///
 /// Bookkeeping (Skilling 2006, §3-4): after i deaths the expected prior volume is X_i = e^{−i/n}; dead
 /// point i carries weight w_i = L_i (X_{i−1} − X_i); Z = Σ w_i plus the live points' share X_end·mean(L)
@@ -50,7 +50,9 @@ struct NestedRun {
   double max_log_likelihood = 0.0;
   long calls = 0;                      ///< likelihood evaluations (initial live points included)
   long iterations = 0;                 ///< deaths
-  std::string stopped_by;              ///< "dlogz", "max_iterations" or "early_stop"
+  /// "dlogz", "max_iterations" or "early_stop"; runs of the same shape made otherwise say "analytic"
+  /// (no parameter to sample) or "quadrature" (inference/quadrature_evidence.hpp).
+  std::string stopped_by;
   /// ln of the prior fraction with finite likelihood, estimated from the initial draws (0 when ln L is
   /// never −∞). ln Z is the evidence under the prior renormalised to that support; ln Z + this is
   /// ln ∫ L π over the original prior.
