@@ -2,6 +2,7 @@
 #include "diagnosis/diagnosis.hpp"
 
 #include "core/errors.hpp"
+#include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 
 #include <fmt/format.h>

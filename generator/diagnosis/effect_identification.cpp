@@ -2,6 +2,7 @@
 #include "diagnosis/effect_identification.hpp"
 
 #include "core/parallel.hpp"
+#include "core/progress.hpp"
 #include "core/rng.hpp"
 #include "inference/evidence.hpp"
 

@@ -24,7 +24,6 @@
 /// band-resolved gap after.
 #pragma once
 
-#include "core/progress.hpp"
 #include "diagnosis/effect_candidates.hpp"
 #include "diagnosis/effect_likelihood.hpp"
 #include "diagnosis/gap_metrics.hpp"
@@ -35,6 +34,10 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+namespace admitgen {
+class Progress;  // core/progress.hpp
+}  // namespace admitgen
 
 namespace admitgen::diagnosis {
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Evidence arithmetic, stated once for every comparison (orders in `fit`, effects in `diagnose`):
-/// sums of evidences in log space and Bayes factors in deciban (docs/method.md, "Sampler and evidence
-/// error").
+/// Evidence arithmetic shared by every model comparison (orders in selection/, effects in diagnosis/):
+/// sums of evidences in log space and Bayes factors on the deciban scale (docs/method.md, "Model
+/// selection" and "One comparison stack").
 ///
 ///   log_add_exp(a, b) = ln(e^a + e^b), exact for a or b = −∞;
 ///   deciban(ln Z_i, ln Z_j) = 10 log₁₀(Z_i/Z_j) = 10 (ln Z_i − ln Z_j)/ln 10;

@@ -51,7 +51,7 @@ LivePoints draw_live_points(const Model& model, int n, Rng& rng, NestedRun& run)
     do {
       if (draws >= kMaxDrawsPerPoint * n)
         throw InputError(fmt::format("fewer than 1 in {} prior draws has a finite likelihood (a support this small, "
-                                     "e.g. a prior of almost only non-passive models truncated to the passive ones, "
+                                     "e.g. a prior truncated to passive models when almost none of them is, "
                                      "cannot be sampled)",
                                      kMaxDrawsPerPoint));
       for (int k = 0; k < dim; ++k) live.u(k, i) = rng.uniform();

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "selection/fit.hpp"
 
-#include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -24,7 +24,7 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 SamplerKind parse_sampler_kind(const std::string& text) {
   if (text == "poles") return SamplerKind::poles;
   if (text == "full") return SamplerKind::full;
-  throw InputError(fmt::format("--sampler '{}': expected full (default) or poles", text));
+  throw InputError(fmt::format("{} '{}': expected full (default) or poles", setting("sampler_kind"), text));
 }
 
 Model order_model(const Measurement& data, const Order& order, const FitSettings& settings) {
@@ -33,7 +33,7 @@ Model order_model(const Measurement& data, const Order& order, const FitSettings
   LogLikelihoodFn log_likelihood = [likelihood](const double* th) { return (*likelihood)(th); };
   if (settings.passive)
     log_likelihood = [likelihood, order](const double* th) {
-      return checks::is_passive(order, th) ? (*likelihood)(th) : -std::numeric_limits<double>::infinity();
+      return is_passive(order, th) ? (*likelihood)(th) : -std::numeric_limits<double>::infinity();
     };
   return Model{order.parameter_names(), [transform](const double* u, double* th) { (*transform)(u, th); },
                std::move(log_likelihood), [transform](double* u) { transform->fold(u); }};
@@ -177,8 +177,8 @@ void check_constrainable(const Measurement& data, const FitSettings& settings) {
   const int k = real_data_count(settings.data_count, data.size());
   if (k < largest.dim() + 2)
     throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
-                                 "--qmax/--smax or supply more frequency points",
-                                 largest.name(), largest.dim(), k));
+                                 "{}/{} or supply more frequency points",
+                                 largest.name(), largest.dim(), k, setting("qmax"), setting("smax")));
 }
 
 }  // namespace

@@ -15,8 +15,8 @@ SelectionRule SelectionRule::parse(const std::string& text) {
     const auto db = parse_double(text.substr(prefix.size()));
     if (db && std::isfinite(*db) && *db >= 0.0) return SelectionRule(true, *db);
   }
-  throw InputError(fmt::format("--select '{}': expected 'best' or 'cheapest:DB' with a margin DB >= 0 in deciban "
-                               "(e.g. cheapest:10)", text));
+  throw InputError(fmt::format("{} '{}': expected 'best' or 'cheapest:DB' with a margin DB >= 0 in deciban "
+                               "(e.g. cheapest:10)", setting("rule"), text));
 }
 
 std::size_t SelectionRule::select(const std::vector<double>& log_z, const std::vector<int>& buffers) const {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// How an order is chosen from the evidence grid (method.md, "Model selection"):
+/// How an order is chosen from the evidence grid (docs/method.md, "Model selection"):
 ///   best         the highest ln Z;
 ///   cheapest:DB  the fewest state buffers (Q + 2S) among orders within DB deciban of the best
 ///                (ties broken by higher evidence) — the paper's argument for Q1S1 over Q0S2.
 #pragma once
 
-#include "inference/evidence.hpp"  // deciban
+#include "inference/evidence.hpp"  // deciban: the unit of the cheapest:DB margin
 
 #include <string>
 #include <vector>
