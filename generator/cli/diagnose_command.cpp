@@ -5,6 +5,7 @@
 #include "codegen/coefficients.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "diagnosis/diagnosis_json.hpp"
 #include "output/fit_reader.hpp"
@@ -42,7 +43,7 @@ DiagnosisRequest to_request(const DiagnoseCommand& o) {
   const TubeSetup& tube = o.tube;
   if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
   DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(tube.temperature_c)), tube,
-                     o.sampler, std::nullopt};
+                     o.settings, std::nullopt};
   if (o.fs) r.stages = StageRequest{read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
   return r;
 }
@@ -60,8 +61,8 @@ void print_summary(const Diagnosis& d, const std::string& path) {
   for (const auto& e : d.identification.effects) {
     std::string params;
     for (const auto& p : e.parameters) params += fmt::format(" {}={:.4g}±{:.2g}", p.name, p.mean, p.std);
-    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}\n", e.name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
-               params);
+    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}{}\n", e.name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
+               params, e.stopped_early ? "  (stopped early: far below the leader)" : "");
   }
   const Verdict& v = d.verdict;
   fmt::print("verdict: {} (BF {:.1f} dB, shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}\nwrote {}\n",
@@ -89,9 +90,13 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
   sub->add_option("--format", cmd->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
   add_data_options(*sub, cmd->read);
   add_tube_options(*sub, cmd->tube);
-  sub->add_option("--live", cmd->sampler.live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
-  sub->add_option("--dlogz", cmd->sampler.dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
-  sub->add_option("--seed", cmd->sampler.seed, "Random seed (each effect derives its own stream)")->capture_default_str();
+  sub->add_option("--live", cmd->settings.sampler.live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
+  sub->add_option("--dlogz", cmd->settings.sampler.dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
+  sub->add_option("--seed", cmd->settings.sampler.seed, "Random seed (each effect derives its own stream)")->capture_default_str();
+  sub->add_option("--threads,-j", cmd->settings.threads,
+                  "Worker threads over candidate effects (0 = all cores); results do not depend on it")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
   sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
   sub->callback([cmd, sub, &exit_code] {
     cmd->format_given = sub->count("--format") > 0;
@@ -102,7 +107,8 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
 int run_diagnose_command(const DiagnoseCommand& o) {
   const DiagnosisRequest request = to_request(o);
   ensure_writable_directory(o.out);
-  const Diagnosis d = run_diagnosis(request);
+  Progress progress(!o.quiet);
+  const Diagnosis d = run_diagnosis(request, progress);
   const std::string path = (std::filesystem::path(o.out) / "diagnosis.json").string();
   write_file_atomically(path, diagnosis_text(d));
   report::write_diagnosis_report(o.out, diagnosis_json(d));

@@ -31,7 +31,7 @@ struct DiagnoseCommand {
   bool format_given = false;
   ReadOptions read;  ///< for --real and a --sim CSV alike
   TubeSetup tube;
-  diagnosis::IdentificationSettings sampler;
+  diagnosis::IdentificationSettings settings;  ///< sampler (--live, --dlogz, --seed) and --threads
   bool quiet = false;
 };
 

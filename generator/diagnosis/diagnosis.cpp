@@ -2,6 +2,7 @@
 #include "diagnosis/diagnosis.hpp"
 
 #include "core/errors.hpp"
+#include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 
 #include <fmt/format.h>
@@ -35,11 +36,16 @@ Measurement covered_part(const Measurement& real, const SimulatedSide& sim, std:
 }  // namespace
 
 Diagnosis run_diagnosis(const DiagnosisRequest& request) {
+  Progress silent(false);
+  return run_diagnosis(request, silent);
+}
+
+Diagnosis run_diagnosis(const DiagnosisRequest& request, Progress& progress) {
   Diagnosis d;
   d.real_path = request.real.path;
   d.real_sha256 = request.real.sha256;
   d.sim_description = request.sim.description();
-  d.sampler = request.sampler;
+  d.settings = request.settings;
   d.warnings = request.real.warnings;
   const Measurement real = covered_part(request.real, request.sim, d.warnings);
   d.f_hz = real.f_hz;
@@ -48,8 +54,8 @@ Diagnosis run_diagnosis(const DiagnosisRequest& request) {
   const Eigen::ArrayXcd y_sim = request.sim.admittance(real.f_hz);
   d.gap = measure_gap(real.f_hz, real.y, y_sim, d.level);
   if (request.stages) d.stages = attribute_stages(real.f_hz, real.y, *request.stages);
-  d.candidates = effect_candidates(real.f_hz, request.sim, request.tube);
-  d.identification = identify_effects(real.f_hz, real.y, y_sim, d.gap, d.candidates, request.sampler);
+  d.candidates = effect_candidates(real.f_hz, y_sim, request.sim, request.tube);
+  d.identification = identify_effects(real.f_hz, real.y, y_sim, d.gap, d.candidates, request.settings, progress);
   d.verdict = decide(d.gap, d.identification);
   return d;
 }

@@ -24,7 +24,7 @@ struct DiagnosisRequest {
   Measurement real;
   SimulatedSide sim;
   TubeSetup tube;
-  IdentificationSettings sampler;
+  IdentificationSettings settings;
   std::optional<StageRequest> stages;  ///< with --fit and --fs
 };
 
@@ -37,12 +37,15 @@ struct Diagnosis {
   std::vector<EffectCandidate> candidates;  ///< what was tried (priors for the report)
   Identification identification;
   Verdict verdict;
-  IdentificationSettings sampler;
+  IdentificationSettings settings;
   std::vector<std::string> warnings;
 };
 
-/// Runs the whole diagnosis. Deterministic for a given request. Throws InputError if fewer than
-/// kMinimumPoints measured points lie where the simulated side is known.
+/// Runs the whole diagnosis, with progress on `progress` (a terminal's stderr). Deterministic for a given
+/// request, whatever settings.threads. Throws InputError if fewer than kMinimumPoints measured points lie
+/// where the simulated side is known.
+Diagnosis run_diagnosis(const DiagnosisRequest& request, Progress& progress);
+/// The same without progress.
 Diagnosis run_diagnosis(const DiagnosisRequest& request);
 
 }  // namespace admitgen::diagnosis

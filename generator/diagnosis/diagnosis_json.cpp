@@ -87,7 +87,9 @@ Json effect_json(const EffectResult& r, const Gap& before) {
               {"explained_fraction", r.explained},
               {"band", band_edges(before.bands[r.band].band)},
               {"bands_after", bands_json(r.gap_after)},
-              {"whiteness_after", whiteness_json(r.gap_after.whiteness)}};
+              {"whiteness_after", whiteness_json(r.gap_after.whiteness)},
+              {"evidence_method", r.method},
+              {"stopped_early", r.stopped_early}};
 }
 
 Json verdict_json(const Verdict& v) {
@@ -110,9 +112,10 @@ Json settings_json(const Diagnosis& d) {
     for (const auto& [name, value] : c.fixed) p[name] = Json{{"fixed", value}};
     priors[c.name] = p;
   }
-  return Json{{"live", d.sampler.live},
-              {"dlogz", d.sampler.dlogz},
-              {"seed", d.sampler.seed},
+  return Json{{"live", d.settings.sampler.live},
+              {"dlogz", d.settings.sampler.dlogz},
+              {"seed", d.settings.sampler.seed},
+              {"evidence", describe_evidence_methods(d.settings)},
               {"likelihood", "marginal-gaussian (noise std marginalised, Jeffreys prior), K = 2N, "
                              "per-point noise shape for heteroscedastic_noise"},
               {"decision_rule", describe_decision_rule()},

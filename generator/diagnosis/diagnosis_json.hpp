@@ -4,7 +4,8 @@
 /// "input" and "settings" (sampler, likelihood, decision rule, the prior of every tried effect);
 /// per band "points", "gap_re", "gap_im"; the gap's "total_re", "total_im", "delta_alpha_max",
 /// "whiteness"; per stage "cumulative"; per effect "parameter_summary" (mean, std, ci95, max_likelihood,
-/// prior), "fixed_parameters", "log_evidence", "log_evidence_error", "band", "whiteness_after";
+/// prior), "fixed_parameters", "log_evidence", "log_evidence_error", "band", "whiteness_after",
+/// "evidence_method" and "stopped_early" (settings "evidence" says how each is computed; docs/method.md);
 /// in the verdict "log_bayes_factor_deciban", "margin_deciban", "residual_white_after", "rule".
 /// "parameters" holds posterior means. Deterministic: no timing, numbers in shortest round-trip form.
 #pragma once

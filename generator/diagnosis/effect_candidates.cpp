@@ -25,6 +25,8 @@ struct Context {
   Air air;
   TubeSetup tube;
   SimulatedSide sim;
+  std::optional<TwoMicrophoneChain> chain;  ///< y_sim through the tube (full geometry only)
+  SlitModel slit;                           ///< the edge gap's slit on this grid
 };
 using ContextPtr = std::shared_ptr<const Context>;
 
@@ -33,10 +35,8 @@ EffectPrediction plain(Eigen::ArrayXcd y) { return {std::move(y), {}}; }
 /// A chain effect: the true chain deviates from the processed one (two_microphone.hpp).
 EffectCandidate chain_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
                              std::function<ChainDeviation(const double*)> deviation) {
-  const TubeGeometry geometry = c->tube.geometry("effect '" + name + "'");
-  return {std::move(name), std::move(priors), {}, [c, geometry, deviation](const double* t) {
-            return plain(measure_through_chain(c->y_sim, c->f, c->air, geometry, deviation(t)));
-          }};
+  return {std::move(name), std::move(priors), {},
+          [c, deviation](const double* t) { return plain(c->chain->measure(deviation(t))); }};
 }
 
 bool full_geometry(const TubeSetup& t) { return t.diameter_m && t.spacing_m && t.mic1_distance_m; }
@@ -83,7 +83,7 @@ EffectCandidate edge_gap(const ContextPtr& c) {
           {{"width_m", Shape::log_uniform, 0.05 * kMm, 3 * kMm}, {"depth_m", Shape::log_uniform, 5 * kMm, 200 * kMm}},
           {},
           [c](const double* t) {
-            return plain(apply_edge_gap(EdgeGap{t[0], t[1]}, *c->tube.diameter_m, c->air, c->f, c->y_sim));
+            return plain(c->slit.edge_gap(EdgeGap{t[0], t[1]}, *c->tube.diameter_m, c->y_sim));
           }};
 }
 
@@ -139,10 +139,12 @@ std::string ParameterPrior::describe() const {
   return fmt::format("{} [{:g}, {:g}]", shape == Shape::uniform ? "uniform" : "log-uniform", lo, hi);
 }
 
-std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const SimulatedSide& sim,
-                                               const TubeSetup& tube) {
+std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_sim,
+                                               const SimulatedSide& sim, const TubeSetup& tube) {
   const Air air = Air::at_celsius(tube.temperature_c);
-  const auto c = std::make_shared<const Context>(Context{f_hz, sim.admittance(f_hz), air, tube, sim});
+  std::optional<TwoMicrophoneChain> chain;
+  if (full_geometry(tube)) chain.emplace(y_sim, f_hz, air, tube.geometry("the chain effects"));
+  const auto c = std::make_shared<const Context>(Context{f_hz, y_sim, air, tube, sim, std::move(chain), SlitModel(air, f_hz)});
   std::vector<EffectCandidate> out;
   out.push_back({"reference_plane", {{"delta_m", Shape::uniform, -10 * kMm, 10 * kMm}}, {}, [c](const double* t) {
                    return plain(apply_reference_plane(ReferencePlane{t[0]}, c->air, c->f, c->y_sim));

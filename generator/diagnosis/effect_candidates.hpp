@@ -65,8 +65,9 @@ struct EffectCandidate {
 };
 
 /// Every effect that applies to this simulated side, frequencies and tube (table above), in the
-/// table's order.
-std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const SimulatedSide& sim,
-                                               const TubeSetup& tube);
+/// table's order. y_sim is the simulated side at f_hz (computed once by the caller); the candidates
+/// share it and the tube chain's fixed quantities (physics/two_microphone.hpp TwoMicrophoneChain).
+std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_sim,
+                                               const SimulatedSide& sim, const TubeSetup& tube);
 
 }  // namespace admitgen::diagnosis

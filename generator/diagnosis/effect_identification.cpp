@@ -1,68 +1,264 @@
 // SPDX-License-Identifier: MIT
 #include "diagnosis/effect_identification.hpp"
 
+#include "core/parallel.hpp"
+#include "core/progress.hpp"
 #include "core/rng.hpp"
-#include "diagnosis/effect_likelihood.hpp"
 #include "inference/evidence.hpp"
-#include "inference/nested_sampler.hpp"
+
+#include <fmt/format.h>
+
+#include <time.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <tuple>
 
 namespace admitgen::diagnosis {
 namespace {
 
-/// Samples one candidate; fills evidence, posterior and the max-likelihood ϑ.
-EffectResult sample_effect(const EffectCandidate& e, const EffectLikelihood& likelihood,
-                           const IdentificationSettings& settings, std::uint64_t seed, std::vector<double>& best) {
-  EffectResult r;
-  r.name = e.name;
-  r.priors = e.priors;
-  r.fixed = e.fixed;
-  const int dim = static_cast<int>(e.priors.size());
-  if (dim == 0) {  // nothing to integrate: Z = L
-    r.log_z = r.max_log_likelihood = likelihood(e.predict(nullptr));
-    r.calls = 1;
-    best.clear();
-    return r;
+/// Status line of the candidates: the running ones with their progress, and the time left, estimated
+/// from the elapsed time and the work done (a quadrature candidate counts 1, a sampled one 10 per
+/// parameter; a run's fraction is how far the logarithm of its remaining-evidence estimate has come down
+/// from its first value towards dlogz).
+class CandidateProgress {
+ public:
+  CandidateProgress(Progress& out, const std::vector<EffectCandidate>& candidates, double dlogz)
+      : out_(out), dlogz_(dlogz), start_(std::chrono::steady_clock::now()) {
+    for (const auto& c : candidates) total_ += cost(c);
   }
-  const auto prior = [&e](const double* u, double* theta) {
-    for (std::size_t k = 0; k < e.priors.size(); ++k) theta[k] = e.priors[k].transform(u[k]);
-  };
-  const auto log_l = [&](const double* theta) { return likelihood(e.predict(theta)); };
-  NestedSettings ns;
-  ns.live = settings.live;
-  ns.dlogz = settings.dlogz;
-  ns.seed = seed;
-  const NestedRun run = run_nested_sampling(dim, prior, log_l, ns);
-  std::vector<std::string> names;
-  for (const auto& p : e.priors) names.push_back(p.name);
-  r.parameters = summarize(run, names);
+  void running(const EffectCandidate& c, const NestedStatus& s) {
+    if (!out_.enabled()) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& [weight, first, fraction] = active_[c.name];
+    if (weight == 0.0) weight = cost(c), first = s.remaining;
+    fraction = first > dlogz_ ? std::clamp(std::log(first / s.remaining) / std::log(first / dlogz_), 0.0, 0.99) : 0.0;
+    show();
+  }
+  void done(const EffectCandidate& c) {
+    if (!out_.enabled()) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    active_.erase(c.name);
+    finished_ += cost(c);
+    ++count_;
+    show();
+  }
+
+ private:
+  static double cost(const EffectCandidate& c) { return c.priors.size() <= 1 ? 1.0 : 10.0 * c.priors.size(); }
+  void show() {
+    double work = finished_;
+    std::string running;
+    for (const auto& [name, a] : active_) {
+      work += std::get<0>(a) * std::get<2>(a);
+      running += fmt::format("  {} {:.0f} %", name, 100.0 * std::get<2>(a));
+    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double fraction = work / total_;
+    std::string left = fraction > 0.05 ? fmt::format(", about {:.0f} s left", elapsed * (1.0 - fraction) / fraction) : "";
+    out_.update(fmt::format("[{} candidates done{}]{}", count_, left, running));
+  }
+  Progress& out_;
+  double dlogz_;
+  std::chrono::steady_clock::time_point start_;
+  double total_ = 0.0, finished_ = 0.0;
+  int count_ = 0;
+  std::mutex mutex_;
+  std::map<std::string, std::tuple<double, double, double>> active_;  ///< name → (cost, first remaining, fraction)
+};
+
+/// Evidence, posterior and best ϑ of one candidate from its run.
+void take_run(const NestedRun& run, const Model& model, EffectResult& r) {
   r.log_z = run.log_z;
   r.log_z_error = run.log_z_error;
   r.max_log_likelihood = run.max_log_likelihood;
   r.calls = run.calls;
+  if (run.dim == 0) return;
+  r.parameters = summarize(run, model.parameter_names);
   const double* p = run.point(max_likelihood_index(run));
-  best.assign(p, p + dim);
+  r.best.assign(p, p + run.dim);
+}
+
+/// The leader every sampled candidate is held to: the best of a known floor (no effect) and the
+/// quadrature candidates' evidences. Its value depends on no schedule; a sampled run that reaches its first
+/// early-stop check before every quadrature candidate is done waits for it.
+class Leader {
+ public:
+  Leader(std::size_t pending, double floor) : pending_(pending), value_(floor) {}
+  void add(double log_z) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    value_ = std::max(value_, log_z);
+    if (--pending_ == 0) done_.notify_all();
+  }
+  double wait() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [this] { return pending_ == 0; });
+    return value_;
+  }
+
+ private:
+  std::size_t pending_;
+  double value_;
+  std::mutex mutex_;
+  std::condition_variable done_;
+};
+
+/// Adds its evidence to the leader when it goes out of scope, also when the candidate threw (then −∞),
+/// so no sampled run waits forever.
+struct LeaderShare {
+  Leader& leader;
+  double log_z = -std::numeric_limits<double>::infinity();
+  ~LeaderShare() { leader.add(log_z); }
+};
+
+/// Start order of the candidates: the costliest sampled ones first on all workers but one, then every
+/// quadrature candidate, then the remaining sampled ones. A sampled run may wait for the leader, which
+/// needs every quadrature candidate done; at most workers − 1 sampled runs start before the last of them,
+/// so one worker is always free for them. Cost: dimension × the time of one likelihood call (timing only
+/// orders the work; it changes no result).
+std::vector<std::size_t> schedule(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
+                                  const std::vector<std::size_t>& cheap, std::vector<std::size_t> sampled, int threads) {
+  std::vector<double> cost(candidates.size(), 0.0);
+  for (std::size_t i : sampled) {
+    const Model model = effect_model(candidates[i], likelihood);
+    std::vector<double> u(static_cast<std::size_t>(model.dim()), 0.5), theta(u.size());
+    model.prior_transform(u.data(), theta.data());
+    const auto start = std::chrono::steady_clock::now();
+    (void)model.log_likelihood(theta.data());
+    cost[i] = static_cast<double>(model.dim()) *
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  std::stable_sort(sampled.begin(), sampled.end(), [&](auto a, auto b) { return cost[a] > cost[b]; });
+  const std::size_t ahead = std::min(sampled.size(), worker_count(threads, candidates.size()) - 1);
+  std::vector<std::size_t> queue(sampled.begin(), sampled.begin() + static_cast<std::ptrdiff_t>(ahead));
+  queue.insert(queue.end(), cheap.begin(), cheap.end());
+  queue.insert(queue.end(), sampled.begin() + static_cast<std::ptrdiff_t>(ahead), sampled.end());
+  return queue;
+}
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+EffectResult start_result(const EffectCandidate& e) {
+  EffectResult r;
+  r.name = e.name;
+  r.priors = e.priors;
+  r.fixed = e.fixed;
   return r;
 }
 
 }  // namespace
 
+Model effect_model(const EffectCandidate& e, const EffectLikelihood& likelihood) {
+  std::vector<std::string> names;
+  for (const auto& p : e.priors) names.push_back(p.name);
+  return Model{std::move(names),
+               [&e](const double* u, double* theta) {
+                 for (std::size_t k = 0; k < e.priors.size(); ++k) theta[k] = e.priors[k].transform(u[k]);
+               },
+               [&e, &likelihood](const double* theta) { return likelihood(e.predict(theta)); }};
+}
+
+std::string describe_evidence_methods(const IdentificationSettings& s) {
+  std::string text = fmt::format(
+      "no parameter: the likelihood (closed_form); one: Gauss-Kronrod quadrature over the prior to a relative "
+      "error {:g} of Z (quadrature); two or more: nested sampling (nested_sampling)",
+      s.quadrature.tolerance);
+  if (s.early_stop_deciban > 0.0)
+    text += fmt::format("; a sampled effect stops early once its live points fill less than 1/live^2 of the prior "
+                        "and 2 max ln L(live) - ln L(contour) stays {:g} deciban below the best evidence of the "
+                        "quadrature effects and no effect",
+                        s.early_stop_deciban);
+  return text;
+}
+
+double early_stop_bound(const NestedStatus& s) { return 2.0 * s.log_l_max_live - s.log_l_contour; }
+
+bool early_stop_allowed(const NestedStatus& s, int live) { return s.log_x <= -2.0 * std::log(static_cast<double>(live)); }
+
+std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>& candidates,
+                                              const EffectLikelihood& likelihood, const IdentificationSettings& settings,
+                                              double log_z_floor, std::uint64_t first_stream, Progress& progress) {
+  std::vector<EffectResult> results(candidates.size());
+  std::vector<std::size_t> cheap, sampled;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const std::size_t dim = candidates[i].priors.size();
+    (dim == 0 || (dim == 1 && settings.use_quadrature) ? cheap : sampled).push_back(i);
+  }
+  Leader leader(cheap.size(), log_z_floor);
+  CandidateProgress status(progress, candidates, settings.sampler.dlogz);
+  const auto timed = [&](std::size_t i, const auto& body) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
+    results[i] = start_result(candidates[i]);
+    body(results[i]);
+    results[i].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    results[i].cpu_seconds = thread_cpu_seconds() - cpu_start;
+    status.done(candidates[i]);
+  };
+  const auto by_quadrature = [&](std::size_t i) {
+    LeaderShare share{leader};  // reports this evidence (−∞ if it throws) when it goes out of scope
+    timed(i, [&](EffectResult& r) {
+      r.method = candidates[i].priors.empty() ? "closed_form" : "quadrature";
+      const Model model = effect_model(candidates[i], likelihood);
+      take_run(evidence_by_quadrature(model, settings.quadrature), model, r);
+      share.log_z = r.log_z;
+    });
+  };
+  const auto by_sampling = [&](std::size_t i) {
+    timed(i, [&](EffectResult& r) {
+      r.method = "nested_sampling";
+      NestedSettings sampler = settings.sampler;
+      sampler.seed = derive_seed(settings.sampler.seed, first_stream + i);
+      NestedStopFn stop;
+      if (settings.early_stop_deciban > 0.0)
+        stop = [&](const NestedStatus& s) {
+          if (!early_stop_allowed(s, sampler.live)) return false;
+          const double bound = early_stop_bound(s);
+          if (deciban(bound, leader.wait()) >= -settings.early_stop_deciban) return false;
+          r.stopped_early = true;
+          r.log_z_bound = bound;
+          return true;
+        };
+      const Model model = effect_model(candidates[i], likelihood);
+      const NestedRun run =
+          run_nested_sampling(model, sampler, [&](const NestedStatus& s) { status.running(candidates[i], s); }, stop);
+      take_run(run, model, r);
+    });
+  };
+  const std::vector<std::size_t> queue = schedule(candidates, likelihood, cheap, sampled, settings.threads);
+  run_in_parallel(queue, settings.threads, [&](std::size_t i) {
+    const bool quadrature = std::find(cheap.begin(), cheap.end(), i) != cheap.end();
+    quadrature ? by_quadrature(i) : by_sampling(i);
+  });
+  progress.finish();
+  return results;
+}
+
 Identification identify_effects(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real,
                                 const Eigen::ArrayXcd& y_sim, const Gap& gap_before,
-                                const std::vector<EffectCandidate>& candidates, const IdentificationSettings& settings) {
+                                const std::vector<EffectCandidate>& candidates, const IdentificationSettings& settings,
+                                Progress& progress) {
   const EffectLikelihood likelihood(y_real);
   const double level = rms_level(y_real);
   Identification out;
   out.log_z_none = likelihood(EffectPrediction{y_sim, {}});
+  out.effects = evaluate_candidates(candidates, likelihood, settings, out.log_z_none, 0, progress);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    std::vector<double> best;
-    EffectResult r = sample_effect(candidates[i], likelihood, settings, derive_seed(settings.seed, i), best);
-    r.gap_after = measure_gap(f_hz, y_real, candidates[i].predict(best.empty() ? nullptr : best.data()).y, level);
+    EffectResult& r = out.effects[i];
+    r.gap_after = measure_gap(f_hz, y_real, candidates[i].predict(r.best.empty() ? nullptr : r.best.data()).y, level);
     r.shrink = gap_before.total / r.gap_after.total;
     r.explained = 1.0 - 1.0 / (r.shrink * r.shrink);
     r.band = most_improved_band(gap_before.bands, r.gap_after.bands);
-    out.effects.push_back(std::move(r));
   }
   std::stable_sort(out.effects.begin(), out.effects.end(),
                    [](const EffectResult& a, const EffectResult& b) { return a.log_z > b.log_z; });

@@ -1,11 +1,23 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// Which unmodelled effect explains the gap: for every candidate e (effect_candidates.hpp) the
-/// evidence Z_e = ∫ L(ϑ) π(ϑ) dϑ of "simulated side + e" is computed with the nested sampler of `fit`
-/// (inference/nested_sampler.hpp) and compared with the no-effect model, whose evidence is its
-/// likelihood (no free parameter):  BF_e = 10 log₁₀(Z_e/Z₀) deciban. The prior volume of ϑ makes the
-/// comparison fair between effects with 0 to 3 parameters (Occam factor), so a flexible effect that
-/// only fits noise loses against none.
+/// evidence Z_e = ∫ L(ϑ) π(ϑ) dϑ of "simulated side + e" is computed and compared with the no-effect
+/// model, whose evidence is its likelihood (no free parameter):  BF_e = 10 log₁₀(Z_e/Z₀) deciban
+/// (inference/evidence.hpp). The prior volume of ϑ makes the comparison fair between effects with 0 to 3
+/// parameters (Occam factor), so a flexible effect that only fits noise loses against none.
+///
+/// Each candidate is a model (inference/model.hpp) of the measurement. How its evidence is computed
+/// (docs/method.md, "Comparing effects"):
+///  * 0 parameters: Z = L at the one point ("closed_form");
+///  * 1 parameter: quadrature over the prior (inference/quadrature_evidence.hpp, "quadrature"), exact to
+///    about 1e-6 nats, where nested sampling would carry ±√(H/n) ≈ 0.4 nat;
+///  * 2-3 parameters: nested sampling (inference/nested_sampler.hpp, "nested_sampling"), candidate i on
+///    the seed stream derive_seed(seed, i).
+/// Candidates run in parallel (core/parallel.hpp); each writes only its own result, so the results do
+/// not depend on the thread count. The quadrature candidates run first; the best evidence among them and
+/// no effect is then the leader, fixed before any sampled candidate starts. A sampled candidate stops
+/// early when it cannot come near that leader (early_stop_bound below); its evidence is then the
+/// estimate at the stop, and diagnosis.json marks it.
 ///
 /// Each effect then reports its posterior (mean, std, 95 % interval, max-likelihood value) and the gap
 /// left at the max-likelihood ϑ: gap_after, shrink = gap_before/gap_after over the whole data, and the
@@ -13,21 +25,42 @@
 #pragma once
 
 #include "diagnosis/effect_candidates.hpp"
+#include "diagnosis/effect_likelihood.hpp"
 #include "diagnosis/gap_metrics.hpp"
+#include "inference/nested_sampler.hpp"
 #include "inference/posterior.hpp"
+#include "inference/quadrature_evidence.hpp"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+namespace admitgen {
+class Progress;  // core/progress.hpp
+}  // namespace admitgen
+
 namespace admitgen::diagnosis {
 
-/// Sampler settings. Effects have 0-3 parameters on a fixed simulated admittance, so a hundred live
-/// points already give ln Z to ±√(H/n) ≈ 0.4 nat (2 dB), far inside the 20 dB decision margin.
+/// A sampled candidate whose bound stays this far below the leader's evidence stops early (5× the
+/// decision threshold of verdict.hpp: such a candidate can neither win nor be the runner-up that
+/// decides the margin).
+inline constexpr double kEarlyStopDeciban = 100.0;
+
 struct IdentificationSettings {
-  int live = 100;
-  double dlogz = 0.1;
-  std::uint64_t seed = 1;  ///< effect i samples with derive_seed(seed, i)
+  /// Effects have 0-3 parameters on a fixed simulated admittance, so a hundred live points already give
+  /// ln Z to ±√(H/n) ≈ 0.4 nat (2 dB), far inside the 20 dB decision margin. seed is the user seed.
+  NestedSettings sampler = effect_sampler();
+  QuadratureSettings quadrature{};
+  bool use_quadrature = true;  ///< false: 1-parameter candidates are sampled too (the former method)
+  int threads = 0;  ///< candidates run in parallel on this many threads; 0 = all cores
+  double early_stop_deciban = kEarlyStopDeciban;  ///< 0: never stop early
+
+  static NestedSettings effect_sampler() {
+    NestedSettings s;
+    s.live = 100;
+    s.dlogz = 0.1;
+    return s;
+  }
 };
 
 struct EffectResult {
@@ -35,11 +68,17 @@ struct EffectResult {
   std::vector<ParameterPrior> priors;
   std::vector<ParameterSummary> parameters;           ///< one per prior, in its order
   std::vector<std::pair<std::string, double>> fixed;  ///< parameters held fixed
+  std::string method;                                 ///< closed_form | quadrature | nested_sampling
   double log_z = 0.0;
   double log_z_error = 0.0;
   double max_log_likelihood = 0.0;
   double bayes_factor_deciban = 0.0;  ///< against no effect
   long calls = 0;
+  bool stopped_early = false;
+  double log_z_bound = 0.0;  ///< when stopped early: the bound that stopped it (early_stop_bound)
+  double seconds = 0.0;      ///< wall time of this candidate (not written to diagnosis.json)
+  double cpu_seconds = 0.0;  ///< CPU time of its thread (the wall time on an idle core; not written either)
+  std::vector<double> best;  ///< the max-likelihood ϑ
   Gap gap_after;
   double shrink = 1.0;         ///< gap_before.total / gap_after.total
   double explained = 0.0;      ///< fraction of the squared gap explained: 1 − 1/shrink²
@@ -51,10 +90,34 @@ struct Identification {
   std::vector<EffectResult> effects;  ///< best (largest Bayes factor) first; ties keep the candidate order
 };
 
+/// The bound a sampled candidate is held to after its live points have shrunk to X ≤ 1/n² of the
+/// prior: 2 ln L_max,live − ln L* (the best live likelihood plus the live points' spread above the
+/// contour L*). Z ≤ max L, and for a peak the best of n live points falls short of max L by far less
+/// than the spread (docs/method.md, "Early stop"). X ≤ 1/n² first: a mode of prior mass below that would
+/// not have been found by the rest of the run either (n·mass ≪ 1).
+double early_stop_bound(const NestedStatus& status);
+bool early_stop_allowed(const NestedStatus& status, int live);
+
+/// A candidate as a model of the measurement (inference/model.hpp): its priors through the unit cube, the
+/// likelihood of its prediction. Holds references to both.
+Model effect_model(const EffectCandidate& candidate, const EffectLikelihood& likelihood);
+
+/// How the evidences are computed and the early-stop rule, in words (diagnosis.json "settings").
+std::string describe_evidence_methods(const IdentificationSettings& settings);
+
+/// The evidence of each candidate as described above, with the runs in parallel; `first_stream` offsets
+/// the seed streams (candidate i samples with derive_seed(settings.sampler.seed, first_stream + i)), so
+/// a later search over combinations can call this again with fresh streams. `log_z_floor` is a leader
+/// known before the call (e.g. no effect's ln Z). Fills everything but the gap fields and the Bayes factor.
+std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>& candidates,
+                                              const EffectLikelihood& likelihood, const IdentificationSettings& settings,
+                                              double log_z_floor, std::uint64_t first_stream, Progress& progress);
+
 /// Runs every candidate against y_real (at f_hz, level ‖y_real‖) and ranks them; y_sim is the
 /// no-effect model.
 Identification identify_effects(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real,
                                 const Eigen::ArrayXcd& y_sim, const Gap& gap_before,
-                                const std::vector<EffectCandidate>& candidates, const IdentificationSettings& settings);
+                                const std::vector<EffectCandidate>& candidates, const IdentificationSettings& settings,
+                                Progress& progress);
 
 }  // namespace admitgen::diagnosis

@@ -8,14 +8,11 @@
 
 namespace admitgen::diagnosis {
 
-EffectLikelihood::EffectLikelihood(Eigen::ArrayXcd y_real) : y_(std::move(y_real)) {
-  const double k = 2.0 * static_cast<double>(y_.size());
-  constant_ = std::lgamma(k / 2.0) - std::log(2.0) - (k / 2.0) * std::log(EIGEN_PI);
-}
+EffectLikelihood::EffectLikelihood(Eigen::ArrayXcd y_real)
+    : y_(std::move(y_real)), marginal_(2.0 * static_cast<double>(y_.size())) {}
 
 double EffectLikelihood::operator()(const EffectPrediction& p) const {
   ADMITGEN_ENSURE(p.y.size() == y_.size(), "prediction has {} points, data {}", p.y.size(), y_.size());
-  const double k = 2.0 * static_cast<double>(y_.size());
   double e_w = 0.0, log_shape = 0.0;
   if (p.noise_shape.size() == 0) {
     e_w = (y_ - p.y).abs2().sum();
@@ -26,7 +23,7 @@ double EffectLikelihood::operator()(const EffectPrediction& p) const {
     log_shape = 2.0 * p.noise_shape.log().sum();
   }
   if (!std::isfinite(e_w) || !std::isfinite(log_shape)) return -std::numeric_limits<double>::infinity();
-  return constant_ - (k / 2.0) * std::log(std::max(e_w, 1e-300)) - log_shape;
+  return marginal_(e_w) - log_shape;
 }
 
 }  // namespace admitgen::diagnosis

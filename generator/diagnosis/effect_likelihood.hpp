@@ -13,6 +13,7 @@
 #pragma once
 
 #include "diagnosis/effect_candidates.hpp"
+#include "inference/likelihood.hpp"
 
 #include <Eigen/Core>
 
@@ -26,7 +27,7 @@ class EffectLikelihood {
 
  private:
   Eigen::ArrayXcd y_;
-  double constant_;  ///< ln Γ(K/2) − ln 2 − (K/2) ln π
+  MarginalGaussian marginal_;  ///< K = 2N
 };
 
 }  // namespace admitgen::diagnosis

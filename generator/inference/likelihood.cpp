@@ -30,7 +30,7 @@ Likelihood::Likelihood(const Measurement& data, const Order& order, DataCount co
       d_re_(data.y.real()),
       d_im_(data.y.imag()),
       k_(real_data_count(count, data.size())),
-      constant_(std::lgamma(0.5 * k_) - std::log(2.0) - 0.5 * k_ * std::log(EIGEN_PI)) {}
+      marginal_(k_) {}
 
 double Likelihood::sum_squared_residual(const double* theta) const {
   grid_.evaluate(order_, theta, re_, im_);
@@ -38,8 +38,7 @@ double Likelihood::sum_squared_residual(const double* theta) const {
 }
 
 double Likelihood::operator()(const double* theta) const {
-  const double e = std::max(sum_squared_residual(theta), 1e-300);
-  return constant_ - 0.5 * k_ * std::log(e);
+  return marginal_(sum_squared_residual(theta));
 }
 
 }  // namespace admitgen

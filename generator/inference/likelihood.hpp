@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace admitgen {
@@ -25,6 +27,23 @@ DataCount parse_data_count(const std::string& text);  ///< "2N" | "N"
 std::string describe(DataCount count);                 ///< e.g. "marginal-gaussian, K = 2N"
 /// K, the number of real data in `points` complex points under `count`.
 int real_data_count(DataCount count, Eigen::Index points);
+
+/// The marginal-Gaussian likelihood of K real residuals with sum of squares S (docs/method.md,
+/// "Likelihood"): ln L = ln Γ(K/2) − ln 2 − (K/2) ln(π S), written once for orders, effects and the
+/// residue marginal (which uses it with K → ν = K − p).
+class MarginalGaussian {
+ public:
+  explicit MarginalGaussian(double k) : k_(k), constant_(log_constant(k)) {}
+  /// ln L for sum of squares S, floored at 1e-300 so ln L stays finite.
+  double operator()(double sum_squares) const { return constant_ - 0.5 * k_ * std::log(std::max(sum_squares, 1e-300)); }
+  double k() const { return k_; }
+  /// ln Γ(K/2) − ln 2 − (K/2) ln π.
+  static double log_constant(double k) { return std::lgamma(0.5 * k) - std::log(2.0) - 0.5 * k * std::log(EIGEN_PI); }
+
+ private:
+  double k_;
+  double constant_;
+};
 
 /// Holds the data and work buffers: one instance per thread (operator() is not reentrant).
 class Likelihood {
@@ -45,7 +64,7 @@ class Likelihood {
   MultipoleGrid grid_;
   Eigen::ArrayXd d_re_, d_im_;
   int k_;
-  double constant_;  ///< ln Γ(K/2) − ln 2 − (K/2) ln π
+  MarginalGaussian marginal_;
   mutable Eigen::ArrayXd re_, im_;
 };
 

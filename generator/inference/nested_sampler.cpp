@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
+#include "inference/evidence.hpp"
 #include "inference/live_point_clusters.hpp"
 #include "inference/slice_step.hpp"
 
@@ -16,46 +17,34 @@
 namespace admitgen {
 namespace {
 
-double log_add_exp(double a, double b) {
-  if (a == -std::numeric_limits<double>::infinity()) return b;
-  if (b == -std::numeric_limits<double>::infinity()) return a;
-  const double m = std::max(a, b);
-  return m + std::log1p(std::exp(-std::abs(a - b)));
-}
+constexpr double kMinusInf = -std::numeric_limits<double>::infinity();
 
 /// Running evidence and information (Skilling 2006, eq. 17 for H).
 struct EvidenceAccumulator {
-  double log_z = -std::numeric_limits<double>::infinity();
+  double log_z = kMinusInf;
   double h = 0.0;
   void add(double log_w, double log_l) {
     const double new_log_z = log_add_exp(log_z, log_w);
     const double h_part = std::exp(log_w - new_log_z) * log_l;
-    const double h_prev = log_z == -std::numeric_limits<double>::infinity()
-                              ? 0.0
-                              : std::exp(log_z - new_log_z) * (h + log_z);
+    const double h_prev = log_z == kMinusInf ? 0.0 : std::exp(log_z - new_log_z) * (h + log_z);
     h = h_part + h_prev - new_log_z;
     log_z = new_log_z;
   }
 };
 
-}  // namespace
+/// The n live points as columns: position in the unit cube, θ, ln L.
+struct LivePoints {
+  Eigen::MatrixXd u, theta;
+  Eigen::VectorXd log_l;
+};
 
-NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, const LogLikelihoodFn& log_likelihood,
-                              const NestedSettings& settings, const NestedProgressFn& progress, const FoldFn& fold) {
-  ADMITGEN_ENSURE(dim >= 1, "dimension {}", dim);
-  ADMITGEN_ENSURE(settings.live >= 2, "live points {}", settings.live);
-  const int n = settings.live;
-  const int slices = settings.slices > 0 ? settings.slices : 3 + dim;
-  const int cov_interval = settings.covariance_interval > 0 ? settings.covariance_interval : std::max(1, n / 10);
-  Rng rng(settings.seed);
-
-  NestedRun run;
-  run.dim = dim;
-  Eigen::MatrixXd live_u(dim, n), live_theta(dim, n);
-  Eigen::VectorXd live_log_l(n);
-  // ln L = −∞ marks a point outside the support (e.g. a prior truncated to passive models): the initial
-  // live points are drawn by rejection, so the run samples the prior restricted to the support and ln Z is
-  // the evidence under that renormalised prior; draws/accepted estimate the support fraction.
+/// The initial live points, drawn from the prior by rejection of ln L = −∞. That value marks a point
+/// outside the support (e.g. a prior truncated to passive models), so the run samples the prior
+/// restricted to the support and ln Z is the evidence under that renormalised prior; draws/accepted
+/// estimate the support fraction (NestedRun::log_support_fraction).
+LivePoints draw_live_points(const Model& model, int n, Rng& rng, NestedRun& run) {
+  const int dim = model.dim();
+  LivePoints live{Eigen::MatrixXd(dim, n), Eigen::MatrixXd(dim, n), Eigen::VectorXd(n)};
   constexpr long kMaxDrawsPerPoint = 10000;
   long draws = 0;
   for (int i = 0; i < n; ++i) {
@@ -63,85 +52,150 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
       if (draws >= kMaxDrawsPerPoint * n)
         throw InputError(fmt::format("fewer than 1 in {} prior draws has a finite likelihood (a support this small, "
                                      "e.g. a prior truncated to passive models when almost none of them is, "
-                                     "cannot be sampled)", kMaxDrawsPerPoint));
-      for (int k = 0; k < dim; ++k) live_u(k, i) = rng.uniform();
-      if (fold) fold(live_u.col(i).data());
-      prior_transform(live_u.col(i).data(), live_theta.col(i).data());
-      live_log_l[i] = log_likelihood(live_theta.col(i).data());
+                                     "cannot be sampled)",
+                                     kMaxDrawsPerPoint));
+      for (int k = 0; k < dim; ++k) live.u(k, i) = rng.uniform();
+      if (model.fold) model.fold(live.u.col(i).data());
+      model.prior_transform(live.u.col(i).data(), live.theta.col(i).data());
+      live.log_l[i] = model.log_likelihood(live.theta.col(i).data());
       ++run.calls;
       ++draws;
-    } while (live_log_l[i] == -std::numeric_limits<double>::infinity());
+    } while (live.log_l[i] == kMinusInf);
   }
   run.log_support_fraction = std::log(static_cast<double>(n) / static_cast<double>(draws));
+  return live;
+}
 
-  SliceStep step(dim, prior_transform, log_likelihood);
-  // Clusters need enough points for a covariance: at least 2·dim and 20.
-  constexpr int kMaxClusters = 8;
-  const int min_cluster = std::max(2 * dim, 20);
-  LivePointClusters clusters;
-  EvidenceAccumulator acc;
-  const double log_shrink = -1.0 / n;                         // ln(X_i / X_{i−1})
-  const double log_width_factor = std::log(-std::expm1(log_shrink));  // ln(1 − e^{−1/n})
-  double log_x = 0.0;                                         // ln X_{i−1}
-  Eigen::VectorXd u(dim), theta(dim);
-  run.stopped_by = "max_iterations";
-  for (long it = 0; it < settings.max_iterations; ++it) {
+/// Evidence bookkeeping over the deaths (Skilling 2006, §3-4): X_i = e^{−i/n}, w_i = L_i (X_{i−1} − X_i).
+class Compression {
+ public:
+  explicit Compression(int n) : log_shrink_(-1.0 / n), log_width_factor_(std::log(-std::expm1(log_shrink_))) {}
+
+  /// The worst live point dies: it joins the run with its weight, and X shrinks. Returns its column.
+  Eigen::Index kill_worst(const LivePoints& live, NestedRun& run) {
     Eigen::Index worst = 0;
-    const double log_l_min = live_log_l.minCoeff(&worst);
-    const double log_w = log_l_min + log_x + log_width_factor;  // L_i (X_{i−1} − X_i)
-    acc.add(log_w, log_l_min);
-    run.samples.insert(run.samples.end(), live_theta.col(worst).data(), live_theta.col(worst).data() + dim);
+    const double log_l_min = live.log_l.minCoeff(&worst);
+    const double log_w = log_l_min + log_x_ + log_width_factor_;  // L_i (X_{i−1} − X_i)
+    acc_.add(log_w, log_l_min);
+    run.samples.insert(run.samples.end(), live.theta.col(worst).data(), live.theta.col(worst).data() + run.dim);
     run.log_likelihood.push_back(log_l_min);
     run.log_weight.push_back(log_w);
-    log_x += log_shrink;
-    run.iterations = it + 1;
+    log_x_ += log_shrink_;
+    contour_ = log_l_min;
+    return worst;
+  }
 
-    const double remaining = log_add_exp(acc.log_z, live_log_l.maxCoeff() + log_x) - acc.log_z;
-    if (progress && it % 500 == 0) progress(NestedStatus{it, acc.log_z, remaining, run.calls});
-    if (remaining < settings.dlogz) {
-      run.stopped_by = "dlogz";
-      live_log_l[worst] = -std::numeric_limits<double>::infinity();  // already dead: not a live point
+  NestedStatus status(long iteration, const LivePoints& live, long calls) const {
+    const double log_l_max = live.log_l.maxCoeff();
+    const double remaining = log_add_exp(acc_.log_z, log_l_max + log_x_) - acc_.log_z;
+    return NestedStatus{iteration, acc_.log_z, remaining, calls, log_x_, contour_, log_l_max};
+  }
+
+  /// The remaining live points share the last volume X equally (Skilling 2006, §5), in ascending ln L.
+  void close(const LivePoints& live, NestedRun& run) {
+    std::vector<Eigen::Index> order;
+    for (Eigen::Index i = 0; i < live.log_l.size(); ++i)
+      if (std::isfinite(live.log_l[i])) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return live.log_l[a] < live.log_l[b]; });
+    const double log_share = log_x_ - std::log(static_cast<double>(order.size()));
+    for (Eigen::Index i : order) {
+      const double log_w = live.log_l[i] + log_share;
+      acc_.add(log_w, live.log_l[i]);
+      run.samples.insert(run.samples.end(), live.theta.col(i).data(), live.theta.col(i).data() + run.dim);
+      run.log_likelihood.push_back(live.log_l[i]);
+      run.log_weight.push_back(log_w);
+    }
+  }
+
+  /// ln Z, the information H and the error √(H/n).
+  void finish(int n, NestedRun& run) const {
+    run.log_z = acc_.log_z;
+    run.information = std::max(acc_.h, 0.0);
+    run.log_z_error = std::sqrt(run.information / n);
+    run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
+  }
+
+ private:
+  EvidenceAccumulator acc_;
+  double log_shrink_;        // ln(X_i / X_{i−1})
+  double log_width_factor_;  // ln(1 − e^{−1/n})
+  double log_x_ = 0.0;       // ln X_{i−1}
+  double contour_ = kMinusInf;
+};
+
+/// The constrained step: the dead point is replaced by a copy of a random surviving live point (it
+/// already satisfies L > L*) moved by slice sampling along its cluster's whitened axes; the new point
+/// joins that cluster.
+class Replacement {
+ public:
+  Replacement(const Model& model, const NestedSettings& settings)
+      : model_(model),
+        n_(settings.live),
+        slices_(settings.slices > 0 ? settings.slices : 3 + model.dim()),
+        cov_interval_(settings.covariance_interval > 0 ? settings.covariance_interval : std::max(1, n_ / 10)),
+        min_cluster_(std::max(2 * model.dim(), 20)),
+        step_(model.dim(), model.prior_transform, model.log_likelihood),
+        u_(model.dim()),
+        theta_(model.dim()) {}
+
+  void replace(LivePoints& live, Eigen::Index worst, long iteration, Rng& rng, NestedRun& run) {
+    // Clusters need enough points for a covariance: at least 2·dim and 20.
+    constexpr int kMaxClusters = 8;
+    if (iteration % cov_interval_ == 0) clusters_ = cluster_live_points(live.u, min_cluster_, kMaxClusters);
+    Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n_ - 1)));
+    if (start >= worst) ++start;
+    const int cluster = clusters_.label[static_cast<std::size_t>(start)];
+    u_ = live.u.col(start);
+    theta_ = live.theta.col(start);
+    double log_l = live.log_l[start];
+    step_.set_axes(clusters_.axes[static_cast<std::size_t>(cluster)]);
+    run.calls += step_.move(u_, theta_, log_l, live.log_l[worst], slices_, rng);
+    if (model_.fold) {
+      model_.fold(u_.data());
+      model_.prior_transform(u_.data(), theta_.data());  // same ln L: the likelihood is invariant
+    }
+    clusters_.label[static_cast<std::size_t>(worst)] = cluster;
+    live.u.col(worst) = u_;
+    live.theta.col(worst) = theta_;
+    live.log_l[worst] = log_l;
+  }
+
+ private:
+  const Model& model_;
+  int n_, slices_, cov_interval_, min_cluster_;
+  SliceStep step_;
+  LivePointClusters clusters_;
+  Eigen::VectorXd u_, theta_;
+};
+
+}  // namespace
+
+NestedRun run_nested_sampling(const Model& model, const NestedSettings& settings, const NestedProgressFn& progress,
+                              const NestedStopFn& stop) {
+  ADMITGEN_ENSURE(model.dim() >= 1, "dimension {}", model.dim());
+  ADMITGEN_ENSURE(settings.live >= 2, "live points {}", settings.live);
+  Rng rng(settings.seed);
+  NestedRun run;
+  run.dim = model.dim();
+  LivePoints live = draw_live_points(model, settings.live, rng, run);
+  Compression compression(settings.live);
+  Replacement replacement(model, settings);
+  run.stopped_by = "max_iterations";
+  for (long it = 0; it < settings.max_iterations; ++it) {
+    const Eigen::Index worst = compression.kill_worst(live, run);
+    run.iterations = it + 1;
+    const NestedStatus status = compression.status(it, live, run.calls);
+    if (progress && it % 100 == 0) progress(status);
+    const bool converged = status.remaining < settings.dlogz;
+    if (converged || (stop && stop(status))) {
+      run.stopped_by = converged ? "dlogz" : "early_stop";
+      live.log_l[worst] = kMinusInf;  // already dead: not a live point
       break;
     }
-
-    if (it % cov_interval == 0) clusters = cluster_live_points(live_u, min_cluster, kMaxClusters);
-    // Start from a copy of a random surviving live point (it already satisfies L > L*) and move it
-    // with the axes of its cluster; the new point joins that cluster.
-    Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n - 1)));
-    if (start >= worst) ++start;
-    const int cluster = clusters.label[static_cast<std::size_t>(start)];
-    u = live_u.col(start);
-    theta = live_theta.col(start);
-    double log_l = live_log_l[start];
-    step.set_axes(clusters.axes[static_cast<std::size_t>(cluster)]);
-    run.calls += step.move(u, theta, log_l, log_l_min, slices, rng);
-    if (fold) {
-      fold(u.data());
-      prior_transform(u.data(), theta.data());  // same ln L: the likelihood is invariant
-    }
-    clusters.label[static_cast<std::size_t>(worst)] = cluster;
-    live_u.col(worst) = u;
-    live_theta.col(worst) = theta;
-    live_log_l[worst] = log_l;
+    replacement.replace(live, worst, it, rng, run);
   }
-
-  // The remaining live points share the last volume X equally (Skilling 2006, §5).
-  std::vector<Eigen::Index> order;
-  for (Eigen::Index i = 0; i < n; ++i)
-    if (std::isfinite(live_log_l[i])) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return live_log_l[a] < live_log_l[b]; });
-  const double log_share = log_x - std::log(static_cast<double>(order.size()));
-  for (Eigen::Index i : order) {
-    const double log_w = live_log_l[i] + log_share;
-    acc.add(log_w, live_log_l[i]);
-    run.samples.insert(run.samples.end(), live_theta.col(i).data(), live_theta.col(i).data() + dim);
-    run.log_likelihood.push_back(live_log_l[i]);
-    run.log_weight.push_back(log_w);
-  }
-  run.log_z = acc.log_z;
-  run.information = std::max(acc.h, 0.0);
-  run.log_z_error = std::sqrt(run.information / n);
-  run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
+  compression.close(live, run);
+  compression.finish(settings.live, run);
   return run;
 }
 

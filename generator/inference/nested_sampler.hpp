@@ -2,13 +2,15 @@
 /// @file
 /// Nested sampling (Skilling 2006) with a constrained step by slice sampling along random directions
 /// whitened by the live points' covariance (as PolyChord, Handley et al. 2015, and dynesty's
-/// "rslice", Speagle 2020). The sampler knows nothing about acoustics: it takes a prior transform
-/// from the unit cube and a log-likelihood, both over flat vectors.
+/// "rslice", Speagle 2020). The sampler knows nothing about acoustics: it takes a model
+/// (inference/model.hpp), a prior transform from the unit cube and a log-likelihood over flat vectors.
 ///
 /// Bookkeeping (Skilling 2006, §3-4): after i deaths the expected prior volume is X_i = e^{−i/n}; dead
 /// point i carries weight w_i = L_i (X_{i−1} − X_i); Z = Σ w_i plus the live points' share X_end·mean(L)
 /// at the end; the information H = Σ (w_i/Z) ln(L_i/Z); the error of ln Z is √(H/n).
 #pragma once
+
+#include "inference/model.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -26,12 +28,15 @@ struct NestedSettings {
   int covariance_interval = 0;         ///< iterations between covariance updates; 0 = live/10
 };
 
-/// Periodic status for progress display.
+/// Status of a run after a death: for progress display and early stops.
 struct NestedStatus {
   long iteration;
   double log_z;
   double remaining;  ///< current ln(Z + X·L_max) − ln Z
   long calls;
+  double log_x = 0.0;             ///< ln X, the prior volume left inside the contour
+  double log_l_contour = 0.0;     ///< ln L* of the point that just died
+  double log_l_max_live = 0.0;    ///< the best ln L among the live points
 };
 
 struct NestedRun {
@@ -45,7 +50,9 @@ struct NestedRun {
   double max_log_likelihood = 0.0;
   long calls = 0;                      ///< likelihood evaluations (initial live points included)
   long iterations = 0;                 ///< deaths
-  std::string stopped_by;              ///< "dlogz" or "max_iterations"
+  /// "dlogz", "max_iterations" or "early_stop"; runs of the same shape made otherwise say "analytic"
+  /// (no parameter to sample) or "quadrature" (inference/quadrature_evidence.hpp).
+  std::string stopped_by;
   /// ln of the prior fraction with finite likelihood, estimated from the initial draws (0 when ln L is
   /// never −∞). ln Z is the evidence under the prior renormalised to that support; ln Z + this is
   /// ln ∫ L π over the original prior.
@@ -55,17 +62,13 @@ struct NestedRun {
   const double* point(std::size_t i) const { return samples.data() + i * static_cast<std::size_t>(dim); }
 };
 
-using PriorTransformFn = std::function<void(const double* u, double* theta)>;
-using LogLikelihoodFn = std::function<double(const double* theta)>;
 using NestedProgressFn = std::function<void(const NestedStatus&)>;
-/// Optional symmetry fold: maps u in place to its canonical copy, for a likelihood invariant under
-/// the corresponding group (see inference/priors.hpp). Chains then move in the full cube and every
-/// accepted point is folded back.
-using FoldFn = std::function<void(double* u)>;
+/// Optional early stop: asked after every death; returning true ends the run there (stopped_by
+/// "early_stop"), the live points then closing it as at the dlogz stop.
+using NestedStopFn = std::function<bool(const NestedStatus&)>;
 
-/// Runs nested sampling to completion. Deterministic for a given seed (single-threaded).
-NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, const LogLikelihoodFn& log_likelihood,
-                              const NestedSettings& settings, const NestedProgressFn& progress = {},
-                              const FoldFn& fold = {});
+/// Runs nested sampling on `model` to completion. Deterministic for a given seed (single-threaded).
+NestedRun run_nested_sampling(const Model& model, const NestedSettings& settings,
+                              const NestedProgressFn& progress = {}, const NestedStopFn& stop = {});
 
 }  // namespace admitgen

@@ -29,6 +29,16 @@ NestedRun analytic_run(const ResidueMarginal& marginal, int draws) {
   return run;
 }
 
+/// The poles as a model (inference/model.hpp): the residue-marginal likelihood over ψ with the fold.
+/// Holds references: `transform` and `marginal` outlive the run.
+Model pole_model(const Order& order, const PoleTransform& transform, const ResidueMarginal& marginal) {
+  const std::vector<std::string> all = order.parameter_names();
+  std::vector<std::string> names;
+  for (int i : pole_indices(order)) names.push_back(all[static_cast<std::size_t>(i)]);
+  return Model{std::move(names), [&transform](const double* u, double* psi) { transform(u, psi); },
+               [&marginal](const double* psi) { return marginal(psi); }, [&transform](double* u) { transform.fold(u); }};
+}
+
 }  // namespace
 
 PolesRun run_poles_sampler(const Measurement& data, const Order& order, const PriorRanges& priors,
@@ -39,10 +49,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   const int dim = transform.dim();
   const NestedRun poles =
       dim == 0 ? analytic_run(marginal, settings.live)
-               : run_nested_sampling(
-                     dim, [&](const double* u, double* psi) { transform(u, psi); },
-                     [&](const double* psi) { return marginal(psi); }, settings, progress,
-                     [&](double* u) { transform.fold(u); });
+               : run_nested_sampling(pole_model(order, transform, marginal), settings, progress);
 
   PolesRun out;
   NestedRun& run = out.run;

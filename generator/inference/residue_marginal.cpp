@@ -29,8 +29,7 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
   b_.tail(n) = data.y.imag().matrix();
   b_norm2_ = b_.squaredNorm();
   const double nu = k_ - p_;
-  constant_ = std::lgamma(0.5 * nu) - std::log(2.0) - 0.5 * nu * std::log(EIGEN_PI) -
-              log_residue_box_volume(order, ranges);
+  constant_ = MarginalGaussian::log_constant(nu) - log_residue_box_volume(order, ranges);
   residue_box(order, ranges, lo_, hi_);
   a_.resize(2 * n, p_);
   g_.resize(p_);

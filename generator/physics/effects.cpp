@@ -119,26 +119,42 @@ Eigen::ArrayXcd apply_reference_plane(const ReferencePlane& e, const Air& air, c
 }
 
 Eigen::ArrayXcd slit_admittance(double width_m, double depth_m, const Air& air, const Eigen::ArrayXd& f_hz) {
-  Eigen::ArrayXcd y(f_hz.size());
-  for (Eigen::Index i = 0; i < f_hz.size(); ++i) {
-    const double w = 2.0 * EIGEN_PI * f_hz[i];
-    const cd sv = (width_m / 2.0) * std::sqrt(kJ * w / air.nu());
-    const cd st = (width_m / 2.0) * std::sqrt(kJ * w * air.prandtl / air.nu());
-    const cd rho = air.rho0 / (1.0 - std::tanh(sv) / sv);
-    const cd bulk = air.gamma * air.p0 / (1.0 + (air.gamma - 1.0) * std::tanh(st) / st);
-    const cd zc = std::sqrt(rho * bulk), k = w * std::sqrt(rho / bulk);
-    y[i] = air.rho_c() * kJ * std::tan(k * depth_m) / zc;  // ρ0c0/(−j Z_c cot kh)
-  }
-  return y;
+  return SlitModel(air, f_hz).admittance(width_m, depth_m);
 }
 
 Eigen::ArrayXcd apply_edge_gap(const EdgeGap& e, double tube_diameter_m, const Air& air, const Eigen::ArrayXd& f_hz,
                                const Eigen::ArrayXcd& y) {
+  return SlitModel(air, f_hz).edge_gap(e, tube_diameter_m, y);
+}
+
+SlitModel::SlitModel(const Air& air, const Eigen::ArrayXd& f_hz)
+    : air_(air), omega_(f_hz.size()), root_v_(f_hz.size()), root_t_(f_hz.size()) {
+  for (Eigen::Index i = 0; i < f_hz.size(); ++i) {
+    omega_[i] = 2.0 * EIGEN_PI * f_hz[i];
+    root_v_[i] = std::sqrt(kJ * omega_[i] / air.nu());
+    root_t_[i] = std::sqrt(kJ * omega_[i] * air.prandtl / air.nu());
+  }
+}
+
+Eigen::ArrayXcd SlitModel::admittance(double width_m, double depth_m) const {
+  Eigen::ArrayXcd y(omega_.size());
+  for (Eigen::Index i = 0; i < omega_.size(); ++i) {
+    const cd sv = (width_m / 2.0) * root_v_[i];
+    const cd st = (width_m / 2.0) * root_t_[i];
+    const cd rho = air_.rho0 / (1.0 - std::tanh(sv) / sv);
+    const cd bulk = air_.gamma * air_.p0 / (1.0 + (air_.gamma - 1.0) * std::tanh(st) / st);
+    const cd zc = std::sqrt(rho * bulk), k = omega_[i] * std::sqrt(rho / bulk);
+    y[i] = air_.rho_c() * kJ * std::tan(k * depth_m) / zc;  // ρ0c0/(−j Z_c cot kh)
+  }
+  return y;
+}
+
+Eigen::ArrayXcd SlitModel::edge_gap(const EdgeGap& e, double tube_diameter_m, const Eigen::ArrayXcd& y) const {
   if (!(2.0 * e.width_m < tube_diameter_m))
     throw InputError(fmt::format("edge_gap width_m {} m must be less than half the tube diameter {} m", e.width_m,
                                  tube_diameter_m));
   const double eps = 1.0 - std::pow(1.0 - 2.0 * e.width_m / tube_diameter_m, 2);
-  return (1.0 - eps) * y + eps * slit_admittance(e.width_m, e.depth_m, air, f_hz);
+  return (1.0 - eps) * y + eps * admittance(e.width_m, e.depth_m);
 }
 
 }  // namespace admitgen

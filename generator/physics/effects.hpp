@@ -102,4 +102,19 @@ Eigen::ArrayXcd apply_edge_gap(const EdgeGap& e, double tube_diameter_m, const A
 ///   Z_slit = −j √(ρ_e K_e) cot(ω √(ρ_e/K_e) h),  y_slit = ρ0c0/Z_slit.
 Eigen::ArrayXcd slit_admittance(double width_m, double depth_m, const Air& air, const Eigen::ArrayXd& f_hz);
 
+/// slit_admittance and apply_edge_gap on one frequency grid, with what does not depend on the slit
+/// (ω, √(jω/ν), √(jω Pr/ν)) computed once (for `diagnose`). Results equal the free functions' exactly.
+class SlitModel {
+ public:
+  SlitModel(const Air& air, const Eigen::ArrayXd& f_hz);
+  Eigen::ArrayXcd admittance(double width_m, double depth_m) const;
+  /// apply_edge_gap(e, tube_diameter_m, air, f_hz, y).
+  Eigen::ArrayXcd edge_gap(const EdgeGap& e, double tube_diameter_m, const Eigen::ArrayXcd& y) const;
+
+ private:
+  Air air_;
+  Eigen::ArrayXd omega_;
+  Eigen::ArrayXcd root_v_, root_t_;  ///< √(jω/ν), √(jω Pr/ν)
+};
+
 }  // namespace admitgen

@@ -52,19 +52,41 @@ Eigen::ArrayXcd lossy_wavenumber(const Air& air, const Eigen::ArrayXd& f_hz, dou
 
 Eigen::ArrayXcd measure_through_chain(const Eigen::ArrayXcd& y_true, const Eigen::ArrayXd& f_hz, const Air& air,
                                       const TubeGeometry& tube, const ChainDeviation& dev) {
-  const double x1 = tube.mic1_distance() + dev.reference_plane_m;
-  const double x2 = x1 - tube.spacing() - dev.spacing_error_m;
+  return TwoMicrophoneChain(y_true, f_hz, air, tube).measure(dev);
+}
+
+TwoMicrophoneChain::TwoMicrophoneChain(Eigen::ArrayXcd y_true, Eigen::ArrayXd f_hz, const Air& air,
+                                       const TubeGeometry& tube)
+    : y_true_(std::move(y_true)), f_(std::move(f_hz)), air_(air), tube_(tube) {
+  const Eigen::ArrayXcd k = lossless_wavenumber(air_, f_);
+  advance_ = (2.0 * kJ * tube_.mic1_distance() * k).exp();
+  h_i_ = (-kJ * tube_.spacing() * k).exp();
+  h_r_ = (kJ * tube_.spacing() * k).exp();
+  nominal_ = true_transfer(ChainDeviation{});
+}
+
+Eigen::ArrayXcd TwoMicrophoneChain::true_transfer(const ChainDeviation& dev) const {
+  const double x1 = tube_.mic1_distance() + dev.reference_plane_m;
+  const double x2 = x1 - tube_.spacing() - dev.spacing_error_m;
   if (!(x2 > 0.0 && x2 < x1))
     throw InputError(fmt::format("the chain effects put the microphones at {} m and {} m from the sample; both must be "
                                  "in front of it, the near one closer",
                                  x1, x2));
-  const Air tube_air = Air::at_celsius(air.temperature_c + dev.temperature_offset_k);
-  const Eigen::ArrayXcd y_tube = y_true * (tube_air.rho_c() / air.rho_c());
+  const Air tube_air = Air::at_celsius(air_.temperature_c + dev.temperature_offset_k);
+  const Eigen::ArrayXcd y_tube = y_true_ * (tube_air.rho_c() / air_.rho_c());
   const Eigen::ArrayXcd k_true =
-      dev.tube_losses ? lossy_wavenumber(tube_air, f_hz, tube.diameter()) : lossless_wavenumber(tube_air, f_hz);
-  const Eigen::ArrayXcd h12 = dev.mic_ratio * transfer_function(reflection_from_admittance(y_tube), k_true, x1, x2);
-  const Eigen::ArrayXcd r =
-      reflection_from_transfer(h12, lossless_wavenumber(air, f_hz), tube.mic1_distance(), tube.spacing());
+      dev.tube_losses ? lossy_wavenumber(tube_air, f_, tube_.diameter()) : lossless_wavenumber(tube_air, f_);
+  return transfer_function(reflection_from_admittance(y_tube), k_true, x1, x2);
+}
+
+Eigen::ArrayXcd TwoMicrophoneChain::measure(const ChainDeviation& dev) const {
+  const bool only_mic_ratio = dev.reference_plane_m == 0.0 && dev.spacing_error_m == 0.0 &&
+                              dev.temperature_offset_k == 0.0 && !dev.tube_losses;
+  const Eigen::ArrayXcd h12 = dev.mic_ratio * (only_mic_ratio ? nominal_ : true_transfer(dev));
+  // ISO 10534-2 eq. 17 (reflection_from_transfer) with the precomputed processing terms, element by
+  // element as Eigen evaluates that expression (its exp() keeps it scalar), so the results are the same.
+  Eigen::ArrayXcd r(h12.size());
+  for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = advance_[i] * (h12[i] - h_i_[i]) / (h_r_[i] - h12[i]);
   return admittance_from_reflection(r);
 }
 

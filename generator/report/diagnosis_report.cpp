@@ -119,8 +119,10 @@ std::string effect_table(const Json& d) {
   int rank = 1;
   for (const auto& e : d.value("effects", Json::array())) {
     const std::string name = e.value("effect", std::string("?"));
+    const bool stopped = e.value("stopped_early", false);
     t.rows.push_back({std::to_string(rank++), "<code>" + escape_xml(name) + "</code>",
-                      fmt::format("{:.1f}", e.value("log_bayes_factor_deciban", 0.0)), number(e.value("gap_after", 0.0), 4),
+                      fmt::format("{:.1f}{}", e.value("log_bayes_factor_deciban", 0.0), stopped ? " (stopped early)" : ""),
+                      number(e.value("gap_after", 0.0), 4),
                       fmt::format("{:.2f}×", e.value("shrink", 1.0)),
                       fmt::format("{:.0f} %", 100.0 * e.value("explained_fraction", 0.0)),
                       nominal(e["band"].value("f_center", 1.0)), parameters_text(e)});
@@ -129,7 +131,8 @@ std::string effect_table(const Json& d) {
   t.caption = fmt::format(
       "Effects ranked by the Bayes factor of the simulated side plus the effect against the simulated side alone. "
       "Gap before: {}. Shrink = gap before / gap after over the whole data; explained = share of the squared gap "
-      "removed. Decision rule: {}.",
+      "removed. Decision rule: {}. An effect marked \"stopped early\" stayed far below the leading evidence, so its "
+      "sampling was cut short and its Bayes factor is the estimate at the stop.",
       number(d["gap"].value("total", 0.0), 4), escape_xml(text_of(d["verdict"], "rule")));
   return html(t);
 }

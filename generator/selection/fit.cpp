@@ -2,19 +2,18 @@
 #include "selection/fit.hpp"
 
 #include "core/errors.hpp"
+#include "core/parallel.hpp"
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <exception>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <numeric>
-#include <thread>
 
 namespace admitgen {
 
@@ -28,6 +27,18 @@ SamplerKind parse_sampler_kind(const std::string& text) {
   throw InputError(fmt::format("{} '{}': expected full (default) or poles", setting("sampler_kind"), text));
 }
 
+Model order_model(const Measurement& data, const Order& order, const FitSettings& settings) {
+  const auto transform = std::make_shared<const PriorTransform>(order, settings.priors, settings.reduce_symmetry);
+  const auto likelihood = std::make_shared<const Likelihood>(data, order, settings.data_count);
+  LogLikelihoodFn log_likelihood = [likelihood](const double* th) { return (*likelihood)(th); };
+  if (settings.passive)
+    log_likelihood = [likelihood, order](const double* th) {
+      return is_passive(order, th) ? (*likelihood)(th) : -std::numeric_limits<double>::infinity();
+    };
+  return Model{order.parameter_names(), [transform](const double* u, double* th) { (*transform)(u, th); },
+               std::move(log_likelihood), [transform](double* u) { transform->fold(u); }};
+}
+
 namespace {
 
 NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round) {
@@ -39,19 +50,9 @@ NestedSettings order_sampler_settings(const Order& order, const FitSettings& set
 
 ModelResult run_full(const Measurement& data, const Order& order, const FitSettings& settings,
                      const NestedProgressFn& progress, int round) {
-  const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
-  const Likelihood likelihood(data, order, settings.data_count);
-  const auto log_likelihood = [&](const double* th) {
-    if (settings.passive && !is_passive(order, th)) return -std::numeric_limits<double>::infinity();
-    return likelihood(th);
-  };
   const NestedSettings sampler = order_sampler_settings(order, settings, round);
-  ModelResult result{order,
-                     run_nested_sampling(
-                         order.dim(), [&](const double* u, double* th) { transform(u, th); },
-                         log_likelihood, sampler, progress,
-                         [&](double* u) { transform.fold(u); }),
-                     sampler.live, 0.0, {}};
+  ModelResult result{order, run_nested_sampling(order_model(data, order, settings), sampler, progress), sampler.live,
+                     0.0, {}};
   result.sampler = "full";
   return result;
 }
@@ -235,31 +236,13 @@ void run_orders(const Measurement& data, const FitSettings& settings, const std:
                 Progress& progress) {
   std::vector<std::size_t> queue = which;
   std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
   GridProgress status(progress, queue.size());
-  const auto worker = [&] {
-    for (std::size_t k; (k = next.fetch_add(1)) < queue.size();) {
-      const Order& order = grid[queue[k]];
-      try {
-        results[queue[k]] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); }, round);
-        status.done(results[queue[k]]);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads =
-      std::min<std::size_t>(queue.size(), settings.threads > 0 ? static_cast<unsigned>(settings.threads) : hw);
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  progress.finish();
-  if (failure) std::rethrow_exception(failure);
+  run_in_parallel(queue, settings.threads, [&](std::size_t i) {
+    const Order& order = grid[i];
+    results[i] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); }, round);
+    status.done(results[i]);
+  });
+  progress.finish();  // (on an exception, Progress's destructor clears the line)
 }
 
 }  // namespace

@@ -107,6 +107,12 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
 /// Seed of the run for `order`, derived from the user seed (independent of grid and thread count).
 std::uint64_t order_seed(std::uint64_t user_seed, const Order& order);
 
+/// An order as a model of the data (inference/model.hpp): θ packed as model/order.hpp, the uniform priors
+/// of `settings` with the symmetry fold (or without, if not reduced), the marginal-Gaussian likelihood,
+/// −∞ outside the passive models when `settings.passive`. One instance per thread (the likelihood holds
+/// work buffers).
+Model order_model(const Measurement& data, const Order& order, const FitSettings& settings);
+
 /// Runs one order: nested sampling plus folded summaries. `round` > 0 re-runs with 2^round times the
 /// live points and its own seed stream.
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,

@@ -21,13 +21,13 @@ TEST_CASE("nested sampling of a prior truncated by ln L = -inf: evidence of the 
   NestedSettings s;
   s.live = 250;
   s.seed = 7;
-  const auto run = run_nested_sampling(
-      2, [](const double* u, double* th) { th[0] = 2 * u[0] - 1, th[1] = 2 * u[1] - 1; },
-      [](const double* th) {
-        if (th[0] <= 0.0) return -std::numeric_limits<double>::infinity();
-        return -0.5 * (th[0] * th[0] + th[1] * th[1]) / (kSigma * kSigma) - std::log(2 * 3.14159265358979 * kSigma * kSigma);
-      },
-      s);
+  const Model model{{"x", "y"}, [](const double* u, double* th) { th[0] = 2 * u[0] - 1, th[1] = 2 * u[1] - 1; },
+                    [](const double* th) {
+                      if (th[0] <= 0.0) return -std::numeric_limits<double>::infinity();
+                      return -0.5 * (th[0] * th[0] + th[1] * th[1]) / (kSigma * kSigma) -
+                             std::log(2 * 3.14159265358979 * kSigma * kSigma);
+                    }};
+  const auto run = run_nested_sampling(model, s);
   CHECK(std::abs(run.log_z - std::log(0.25)) <= 3.0 * run.log_z_error);
   CHECK(std::abs(run.log_support_fraction - std::log(0.5)) <= 3.0 * std::sqrt(0.5 / s.live));
   CHECK(std::isfinite(run.information));

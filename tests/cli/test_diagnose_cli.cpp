@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// `admitgen diagnose` end to end: the verdict on a synthetic frame resonance, byte-identical reruns,
-// exit code 1 when the verdict names an effect and 0 when it is `none` (docs/cli.md: 1 = a diagnosis
-// found a violation), exit code 2 and no output on bad input.
+// `admitgen diagnose` end to end: the verdict on a synthetic frame resonance, byte-identical reruns with
+// 1 and 2 threads, exit code 1 when the verdict names an effect and 0 when it is `none` (docs/cli.md:
+// 1 = a diagnosis found a violation), exit code 2 and no output on bad input.
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
@@ -26,14 +26,14 @@ std::string make_real(const std::string& dir) {
 
 }  // namespace
 
-TEST_CASE("diagnose CLI: finds a frame resonance, writes diagnosis.json, reruns byte-identically") {
+TEST_CASE("diagnose CLI: finds a frame resonance, writes diagnosis.json, byte-identical with 1 and 2 threads") {
   const std::string dir = scratch_dir("diagnose_cli");
   const std::string real = make_real(dir);
   const std::string args = "diagnose --real " + real + " --sim " + kMaterial + kTube + " --live 40 --out ";
-  const auto first = run_admitgen(args + dir + "/a");
+  const auto first = run_admitgen(args + dir + "/a --threads 1");
   REQUIRE(first.exit_code == 1);  // the verdict names an effect: a gap with an identified cause
   CHECK(first.output.find("verdict: frame_resonance") != std::string::npos);
-  const auto second = run_admitgen(args + dir + "/b -q");
+  const auto second = run_admitgen(args + dir + "/b -q --threads 2");
   REQUIRE(second.exit_code == 1);
   const std::string a = read_text(dir + "/a/diagnosis.json");
   CHECK(a == read_text(dir + "/b/diagnosis.json"));

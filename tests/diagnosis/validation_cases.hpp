@@ -51,7 +51,8 @@ struct ValidationCase {
 
 inline constexpr double kNoise = 0.003;
 
-inline diagnosis::Diagnosis run_case(const ValidationCase& c, int live = 60) {
+/// The request `run_case` diagnoses: the synthesised "real" data against the clean base material.
+inline diagnosis::DiagnosisRequest case_request(const ValidationCase& c, int live = 60) {
   TubeSetup tube{c.tube_diameter_m, 0.05, c.mic_distance_m, 20.0};
   SynthesisRequest request{parse_material_spec(c.material.spec), {}, log_spaced_frequencies(100.0, 2000.0, 120),
                            kNoise, c.seed, tube};
@@ -66,9 +67,13 @@ inline diagnosis::Diagnosis run_case(const ValidationCase& c, int live = 60) {
                                 tube,
                                 {},
                                 std::nullopt};
-  d.sampler.live = live;
-  d.sampler.seed = c.seed;
-  return diagnosis::run_diagnosis(d);
+  d.settings.sampler.live = live;
+  d.settings.sampler.seed = c.seed;
+  return d;
+}
+
+inline diagnosis::Diagnosis run_case(const ValidationCase& c, int live = 60) {
+  return diagnosis::run_diagnosis(case_request(c, live));
 }
 
 }  // namespace admitgen::test

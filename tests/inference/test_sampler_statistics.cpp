@@ -23,9 +23,9 @@ NestedRun sample(const Measurement& data, const Order& o, bool reduced, int live
   NestedSettings s;
   s.live = live;
   s.seed = seed;
-  return run_nested_sampling(o.dim(), [&](const double* u, double* th) { t(u, th); },
-                             [&](const double* th) { return like(th); }, s, {},
-                             [&](double* u) { t.fold(u); });
+  const Model model{o.parameter_names(), [&](const double* u, double* th) { t(u, th); },
+                    [&](const double* th) { return like(th); }, [&](double* u) { t.fold(u); }};
+  return run_nested_sampling(model, s);
 }
 
 Measurement reference() { return read_measurement(test::sample("reference/q1s1_sigma0.01.csv"), ReadOptions{}); }

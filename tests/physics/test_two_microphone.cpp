@@ -77,6 +77,34 @@ TEST_CASE("two-microphone chain: R -> H12 -> R is the identity without effects")
   CHECK((reflection_from_admittance(rc.measured(ChainDeviation{})) - r).abs().maxCoeff() <= 1e-12);
 }
 
+TEST_CASE("two-microphone chain with precomputed terms equals the ISO pieces composed, to the last bit") {
+  // What `diagnose` evaluates for every deviation (TwoMicrophoneChain::measure) against the public steps
+  // written out: y_tube, k_true, H12 = ratio · transfer_function, ISO inversion, y. The same operations
+  // on the same numbers, so equality is exact.
+  const ReferenceCase rc;
+  const TwoMicrophoneChain chain(rc.y, rc.f, rc.air, rc.tube);
+  ChainDeviation ratio_only, several;
+  ratio_only.mic_ratio = std::polar(1.02, 0.01);
+  several.reference_plane_m = 1e-3;
+  several.spacing_error_m = -2e-4;
+  several.temperature_offset_k = 3.0;
+  several.tube_losses = true;
+  several.mic_ratio = std::polar(0.99, -0.02);
+  for (const ChainDeviation& d : {ChainDeviation{}, ratio_only, several}) {
+    const double x1 = rc.tube.mic1_distance() + d.reference_plane_m;
+    const double x2 = x1 - rc.tube.spacing() - d.spacing_error_m;
+    const Air tube_air = Air::at_celsius(rc.air.temperature_c + d.temperature_offset_k);
+    const Eigen::ArrayXcd y_tube = rc.y * (tube_air.rho_c() / rc.air.rho_c());
+    const Eigen::ArrayXcd k_true = d.tube_losses ? lossy_wavenumber(tube_air, rc.f, rc.tube.diameter())
+                                                 : lossless_wavenumber(tube_air, rc.f);
+    const Eigen::ArrayXcd h12 = d.mic_ratio * transfer_function(reflection_from_admittance(y_tube), k_true, x1, x2);
+    const Eigen::ArrayXcd expected = admittance_from_reflection(reflection_from_transfer(
+        h12, lossless_wavenumber(rc.air, rc.f), rc.tube.mic1_distance(), rc.tube.spacing()));
+    CHECK((chain.measure(d) == expected).all());
+    CHECK((rc.measured(d) == expected).all());
+  }
+}
+
 TEST_CASE("reference_plane: the closed form R e^{-2jk delta} equals the chain with both mics delta further") {
   const ReferenceCase rc;
   const double delta = 2e-3;
