@@ -5,10 +5,12 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "data/csv_reader.hpp"
-#include "diagnosis/diagnosis_json.hpp"
-#include "output/fit_reader.hpp"
+#include "diagnosis/diagnosis.hpp"
+#include "diagnosis/diagnosis_record.hpp"
+#include "io/diagnosis_file.hpp"
+#include "io/fit_file.hpp"
 #include "physics/material_spec.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "report/diagnosis_report.hpp"
 
 #include <fmt/core.h>
@@ -24,12 +26,12 @@ using namespace admitgen::diagnosis;
 /// --sim names a CSV when such a file exists, a material SPEC otherwise.
 SimulatedSide simulated_side(const DiagnoseOptions& o, const ReadOptions& read, const Air& air) {
   if (o.fit) {
-    const auto surface = multipole_from_fit(read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
+    const auto surface = multipole_from_fit(io::read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
     return SimulatedSide::from_material(Material{surface}, air, "fit " + *o.fit + " (" + surface.order.name() + ", mean)");
   }
   if (std::filesystem::is_regular_file(*o.sim))
     return SimulatedSide::from_table(read_measurement(*o.sim, read), "table " + *o.sim);
-  return SimulatedSide::from_material(parse_material_spec(*o.sim), air, "SPEC " + *o.sim);
+  return SimulatedSide::from_material(parse_material_spec(*o.sim, io::read_fit_file), air, "SPEC " + *o.sim);
 }
 
 DiagnosisRequest to_request(const DiagnoseOptions& o) {
@@ -45,7 +47,7 @@ DiagnosisRequest to_request(const DiagnoseOptions& o) {
   r.sampler.live = o.live;
   r.sampler.dlogz = o.dlogz;
   r.sampler.seed = o.seed;
-  if (o.fs) r.stages = StageRequest{read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
+  if (o.fs) r.stages = StageRequest{io::read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
   return r;
 }
 
@@ -109,8 +111,9 @@ int run_diagnose_command(const DiagnoseOptions& o) {
   ensure_writable_directory(o.out);
   const Diagnosis d = run_diagnosis(request);
   const std::string path = (std::filesystem::path(o.out) / "diagnosis.json").string();
-  write_file_atomically(path, diagnosis_text(d));
-  report::write_diagnosis_report(o.out, diagnosis_json(d));
+  const DiagnosisRecord record = diagnosis_record(d);
+  write_file_atomically(path, io::diagnosis_text(record));
+  report::write_diagnosis_report(o.out, record);
   if (!o.quiet) {
     for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
     print_summary(d, path);

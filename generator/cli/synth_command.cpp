@@ -3,6 +3,7 @@
 
 #include "data/csv_writer.hpp"
 #include "data/read_options.hpp"
+#include "io/fit_file.hpp"
 #include "physics/material_spec.hpp"
 #include "physics/synthetic_measurement.hpp"
 
@@ -70,7 +71,7 @@ void setup_synth_command(CLI::App& app, int& exit_code) {
 
 int run_synth_command(const SynthOptions& o) {
   const Band band = Band::parse(o.band);
-  SynthesisRequest request{parse_material_spec(o.material), {}, log_spaced_frequencies(band.lo_hz, band.hi_hz, o.points),
+  SynthesisRequest request{parse_material_spec(o.material, io::read_fit_file), {}, log_spaced_frequencies(band.lo_hz, band.hi_hz, o.points),
                            o.noise, o.seed, TubeSetup{o.tube_diameter, o.mic_spacing, o.mic_distance, o.temperature}};
   for (const auto& text : o.effects) request.effects.push_back(parse_effect(text));
   const Synthesis result = synthesize(request);

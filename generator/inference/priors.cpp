@@ -4,6 +4,8 @@
 #include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -71,10 +73,10 @@ PriorRanges PriorRanges::from_file(const std::string& path) {
   return ranges;
 }
 
-nlohmann::ordered_json PriorRanges::to_json() const {
-  nlohmann::ordered_json j;
-  for (const auto& [family, key] : kFamilyKeys) j[key] = {of(family).lo, of(family).hi};
-  return j;
+std::vector<std::pair<std::string, Range>> PriorRanges::named() const {
+  std::vector<std::pair<std::string, Range>> out;
+  for (const auto& [family, key] : kFamilyKeys) out.emplace_back(key, of(family));
+  return out;
 }
 
 PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bool reduce_symmetry)

@@ -19,9 +19,9 @@
 
 #include "model/order.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace admitgen {
 
@@ -50,7 +50,8 @@ struct PriorRanges {
   Range& of(Family f);
   /// Throws InputError unless every lo < hi and λ, α ranges start at ≥ 0 (causality).
   void validate(const std::string& origin) const;
-  nlohmann::ordered_json to_json() const;
+  /// (file key, range) of every family, in the prior file's key order (G_inf, A, lambda, B, C, alpha, beta).
+  std::vector<std::pair<std::string, Range>> named() const;
 };
 
 /// Maps u ∈ [0,1]^dim to θ under the priors (uniform, or uniform on the reduced space).
