@@ -82,7 +82,7 @@ Json model_json(const FitModel& m) {
   j["likelihood_calls"] = m.likelihood_calls;
   j["iterations"] = m.iterations;
   j["stopped_by"] = m.stopped_by;
-  j["seconds"] = m.seconds;
+  if (m.seconds) j["seconds"] = *m.seconds;
   j["parameters"] = parameters_json(m.parameters);
   if (m.passive_estimate) j["passive_estimate"] = passive_json(*m.passive_estimate);
   if (m.log_passive_prior_fraction) j["log_passive_prior_fraction"] = *m.log_passive_prior_fraction;
@@ -223,7 +223,7 @@ FitModel read_model(const Field& f) {
   m.likelihood_calls = o.required("likelihood_calls").integer();
   m.iterations = o.required("iterations").integer();
   m.stopped_by = o.required("stopped_by").text();
-  m.seconds = o.required("seconds").number();
+  if (auto v = o.optional("seconds")) m.seconds = v->number();
   m.parameters = read_parameters(o.required("parameters"));
   if (auto v = o.optional("passive_estimate")) m.passive_estimate = read_passive(*v);
   if (auto v = o.optional("log_passive_prior_fraction")) m.log_passive_prior_fraction = v->number();

@@ -92,7 +92,7 @@ struct FitModel {
   double log_evidence = 0.0, log_evidence_error = 0.0, max_log_likelihood = 0.0, information_nats = 0.0;
   std::int64_t likelihood_calls = 0, iterations = 0;
   std::string stopped_by;
-  double seconds = 0.0;
+  std::optional<double> seconds;  ///< run time; only in fits of earlier versions (now left out: equal runs, equal bytes)
   std::vector<FitParameter> parameters;
   std::optional<FitPassiveEstimate> passive_estimate;  ///< absent in older fits
   std::optional<double> log_passive_prior_fraction;    ///< with --passive

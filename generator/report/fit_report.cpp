@@ -169,11 +169,11 @@ std::string parameter_table(const FitRecord& fit) {
 }
 
 std::string sampler_table(const FitRecord& fit) {
-  Table t{{"order", "live points", "likelihood calls", "iterations", "stopped by", "H [nats]", "seconds"}, {}, {1, 2, 3, 5, 6}, {}, {}};
+  Table t{{"order", "live points", "likelihood calls", "iterations", "stopped by", "H [nats]"}, {}, {1, 2, 3, 5}, {}, {}};
   for (const auto& m : fit.models) {
     t.rows.push_back({escape_xml(m.order), std::to_string(m.live.value_or(fit.settings.live)),
                       std::to_string(m.likelihood_calls), std::to_string(m.iterations), escape_xml(m.stopped_by),
-                      fmt::format("{:.2f}", m.information_nats), fmt::format("{:.2f}", m.seconds)});
+                      fmt::format("{:.2f}", m.information_nats)});
     t.row_classes.push_back(m.order == fit.selected_order ? "selected" : "");
   }
   t.caption =

@@ -92,7 +92,6 @@ FitModel model_record(const ModelResult& m, const Measurement& data) {
   r.likelihood_calls = m.run.calls;
   r.iterations = m.run.iterations;
   r.stopped_by = m.run.stopped_by;
-  r.seconds = m.seconds;
   r.parameters = parameters(m.parameters);
   r.passive_estimate = passive_record(m);
   if (m.run.log_support_fraction != 0.0) r.log_passive_prior_fraction = m.run.log_support_fraction;
