@@ -7,6 +7,7 @@
 #include "data/csv_reader.hpp"
 #include "io/fit_file.hpp"
 #include "io/posterior_export.hpp"
+#include "io/priors_file.hpp"
 #include "report/fit_report.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/fit.hpp"
@@ -39,7 +40,7 @@ FitSettings to_settings(const FitOptions& o) {
   s.passive = o.passive;
   s.sampler_kind = parse_sampler_kind(o.sampler);
   if (!o.priors.empty()) {
-    s.priors = PriorRanges::from_file(o.priors);
+    s.priors = io::read_priors_file(o.priors);
     s.priors_origin = o.priors;
   }
   return s;

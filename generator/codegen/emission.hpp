@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// `admitgen emit` as a library: fit.json → discrete models per sample rate → quantised tables →
-/// the generated C header (templates/admitgen_boundary.h.in), band-absorption JSON, golden vectors,
-/// and the reader of a header's machine-readable block (what `admitgen check` verifies).
+/// `admitgen emit` as a library: a fit's record (model/fit_record.hpp) → discrete models per sample
+/// rate → quantised tables → the generated C header (templates/admitgen_boundary.h.in), band
+/// absorption, golden vectors, and the writer and reader of a header's model block (what `admitgen
+/// check` verifies; docs/formats.md).
 #pragma once
 
 #include "codegen/band_absorption.hpp"

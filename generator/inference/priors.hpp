@@ -42,9 +42,6 @@ struct PriorRanges {
 
   /// Paper Table 1 (s⁻¹; fits 0.1-4 kHz data).
   static PriorRanges table1() { return {}; }
-  /// Table 1 overridden by a JSON file {"G_inf": [lo, hi], "A": [...], "lambda": [...], "B": [...],
-  /// "C": [...], "alpha": [...], "beta": [...]} (any subset). Throws InputError naming the file and key.
-  static PriorRanges from_file(const std::string& path);
 
   const Range& of(Family f) const;
   Range& of(Family f);
@@ -52,6 +49,9 @@ struct PriorRanges {
   void validate(const std::string& origin) const;
   /// (file key, range) of every family, in the prior file's key order (G_inf, A, lambda, B, C, alpha, beta).
   std::vector<std::pair<std::string, Range>> named() const;
+  /// The range of the family with that prior-file key, nullptr for an unknown key (the prior file,
+  /// io/priors_file.hpp, overrides Table 1 by these keys).
+  Range* find(const std::string& key);
 };
 
 /// Maps u ∈ [0,1]^dim to θ under the priors (uniform, or uniform on the reduced space).

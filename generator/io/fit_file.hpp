@@ -2,8 +2,8 @@
 /// @file
 /// fit.json (docs/formats.md, "fit.json"): the one reader and the one writer of the fit file. They own its
 /// keys, their order and the schema version ("admitgen.fit/1"); everything else takes the typed record,
-/// model/fit_record.hpp. Keys keep a fixed order and numbers print so they read back exactly (nlohmann's
-/// shortest round-trip form), so equal records give equal bytes.
+/// model/fit_record.hpp. Keys keep a fixed order and numbers print so they read back exactly (shortest
+/// round-trip form), so equal records give equal bytes.
 #pragma once
 
 #include "model/fit_record.hpp"

@@ -124,8 +124,8 @@ struct FitRecord {
   std::optional<std::vector<std::string>> warnings;  ///< absent in older fits
   std::optional<std::string> posterior;        ///< file name of the posterior index, when written
 
-  /// The "models" entry of `order` (empty: the selected order), compared as orders ("Q0S2" = "q0s2");
-  /// nullptr when that order was not fitted.
+  /// The "models" entry of `order` (empty: the selected order), compared as parsed orders (Order::parse,
+  /// which throws InputError for text that is not one); nullptr when that order was not fitted.
   const FitModel* model(const std::string& order = {}) const;
 };
 

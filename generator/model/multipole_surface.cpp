@@ -47,13 +47,6 @@ bool fit_has_passive_estimate(const FitRecord& fit, const std::string& order, co
   return model_entry(fit, order, origin).passive_estimate.has_value();
 }
 
-const FitModel* FitRecord::model(const std::string& order) const {
-  const Order wanted = Order::parse(order.empty() ? selected_order : order);
-  for (const auto& m : models)
-    if (Order::parse(m.order) == wanted) return &m;
-  return nullptr;
-}
-
 std::vector<std::string> causality_violations(const MultipoleSurface& surface) {
   const Order& o = surface.order;
   const auto& th = surface.theta;
