@@ -303,12 +303,7 @@ std::string diagnosis_text(const DiagnosisRecord& d) {
 
 DiagnosisRecord parse_diagnosis(const std::string& text, const std::string& file) {
   const Json doc = parse_json(text, file);
-  const auto schema = doc.is_object() ? doc.find("schema") : doc.end();
-  if (schema == doc.end() || !schema->is_string() || *schema != kDiagnosisSchema)
-    throw FileError(file, 0, fmt::format("JSON but not an admitgen diagnosis (schema {})", kDiagnosisSchema));
-  const auto version = doc.find("version");
-  const bool newer = version != doc.end() && version->is_string() && newer_than_this_admitgen(version->get<std::string>());
-  ObjectReader o(Field(doc, file, "", newer));
+  ObjectReader o(document_root(doc, file, kDiagnosisSchema, "diagnosis"));
   DiagnosisRecord d;
   d.schema = o.required("schema").text();
   d.version = o.required("version").text();

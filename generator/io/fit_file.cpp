@@ -295,12 +295,7 @@ bool is_json(const std::string& text) { return !Json::parse(text, nullptr, false
 
 FitRecord parse_fit(const std::string& text, const std::string& file) {
   const Json doc = parse_json(text, file);
-  const auto schema = doc.is_object() ? doc.find("schema") : doc.end();
-  if (schema == doc.end() || !schema->is_string() || *schema != kFitSchema)
-    throw FileError(file, 0, fmt::format("JSON but not an admitgen fit (schema {})", kFitSchema));
-  const auto version = doc.find("version");
-  const bool newer = version != doc.end() && version->is_string() && newer_than_this_admitgen(version->get<std::string>());
-  ObjectReader o(Field(doc, file, "", newer));
+  ObjectReader o(document_root(doc, file, kFitSchema, "fit"));
   FitRecord fit;
   fit.schema = o.required("schema").text();
   fit.version = o.required("version").text();
@@ -331,7 +326,7 @@ FitRecord parse_fit(const std::string& text, const std::string& file) {
 }
 
 FitRecord read_fit_file(const std::string& path) {
-  return parse_fit(read_bounded(path, kMaxDocumentBytes, "fit"), path);
+  return parse_fit(read_bounded(path, kMaxDocumentBytes, "fit.json"), path);
 }
 
 }  // namespace admitgen::io

@@ -30,6 +30,15 @@ bool newer_than_this_admitgen(const std::string& version) {
   return theirs && ours && *theirs > *ours;
 }
 
+Field document_root(const Json& doc, const std::string& file, const char* schema, const char* kind) {
+  const auto found = doc.is_object() ? doc.find("schema") : doc.end();
+  if (found == doc.end() || !found->is_string() || *found != schema)
+    throw FileError(file, 0, fmt::format("JSON but not an admitgen {} (schema {})", kind, schema));
+  const auto version = doc.find("version");
+  const bool newer = version != doc.end() && version->is_string() && newer_than_this_admitgen(version->get<std::string>());
+  return Field(doc, file, "", newer);
+}
+
 void Field::fail(const std::string& what) const {
   std::string value = v_->dump();
   if (value.size() > 80) value = value.substr(0, 77) + "...";

@@ -66,6 +66,11 @@ class Field {
   bool unknown_keys_allowed_;
 };
 
+/// The root of a parsed document of schema `schema` (e.g. "admitgen.fit/1"; `kind` names it in the
+/// error, e.g. "fit"), allowing unknown keys when a newer admitgen wrote it. Throws FileError naming
+/// `file` unless the document is an object whose "schema" is `schema`.
+Field document_root(const Json& doc, const std::string& file, const char* schema, const char* kind);
+
 /// The members of one JSON object.
 class ObjectReader {
  public:
