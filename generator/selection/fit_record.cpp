@@ -2,6 +2,7 @@
 #include "selection/fit_record.hpp"
 
 #include "core/version.hpp"
+#include "inference/evidence.hpp"
 #include "selection/goodness_of_fit.hpp"
 
 #include <fmt/format.h>

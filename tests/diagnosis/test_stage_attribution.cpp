@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Stage attribution (issue 6, "Show it" 2): a deliberately coarse setup is blamed on the right stage,
+// Stage attribution (docs/diagnosis.md): a deliberately coarse setup is blamed on the right stage,
 // and a good setup shows every downstream stage negligible next to the fit.
 #include "io/fit_file.hpp"
 #include "core/errors.hpp"
@@ -20,7 +20,7 @@ namespace {
 FitRecord reference_fit() { return io::read_fit_file(sample("fits/q1s1_reference.json")); }
 
 /// The reference fit with its real pole moved to 2 Hz (λ = 12.566 1/s, A = 100 1/s) and the data band
-/// narrowed to 100-2000 Hz: the slow pole is the hard case of fixed point (physics.md §3.2).
+/// narrowed to 100-2000 Hz: the slow pole is the hard case of fixed point (docs/physics.md §3.2).
 FitRecord slow_pole_fit() {
   FitRecord fit = reference_fit();
   for (auto& p : fit.parameters) {
