@@ -1,12 +1,13 @@
 /// @file
-/// Fuzz target: the fit.json reader (output/fit_reader.hpp) and what `emit`, `check` and `diagnose`
-/// take from the document: the check subject (checks/check_suite.hpp) and the multipole of each
-/// estimate (physics/multipole_surface.hpp). Bad input must end in InputError.
+/// Fuzz target: the fit.json reader (io/fit_file.hpp) and what `emit`, `check` and `diagnose` take from
+/// the record: the check subject (checks/check_suite.hpp, io/check_input.hpp) and the multipole of each
+/// estimate (model/multipole_surface.hpp). Bad input must end in InputError.
 #include "checks/check_suite.hpp"
 #include "core/errors.hpp"
 #include "fuzz_input_file.hpp"
-#include "output/fit_reader.hpp"
-#include "physics/multipole_surface.hpp"
+#include "io/check_input.hpp"
+#include "io/fit_file.hpp"
+#include "model/multipole_surface.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -15,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace admitgen;
   const std::string& path = fuzz::write_input_file(data, size, ".json");
   try {
-    const auto fit = read_fit_file(path);
+    const auto fit = io::read_fit_file(path);
     for (const Estimate e : {Estimate::passive, Estimate::mean, Estimate::max_likelihood}) {
       try {
         (void)checks::subject_from_fit(fit, path, "", e);
@@ -26,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       } catch (const InputError&) {
       }
     }
-    (void)checks::load_subject(path);
+    (void)io::load_check_subject(path);
   } catch (const InputError&) {
   }
   return 0;

@@ -1,9 +1,9 @@
 /// @file
-/// Fuzz target: the priors JSON reader (inference/priors.hpp, PriorRanges::from_file) and its
+/// Fuzz target: the priors JSON reader (io/priors_file.hpp) and its
 /// validation. Bad input must end in InputError.
 #include "core/errors.hpp"
 #include "fuzz_input_file.hpp"
-#include "inference/priors.hpp"
+#include "io/priors_file.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -12,9 +12,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace admitgen;
   const std::string& path = fuzz::write_input_file(data, size, ".json");
   try {
-    const auto ranges = PriorRanges::from_file(path);
+    const auto ranges = io::read_priors_file(path);
     ranges.validate(path);
-    (void)ranges.to_json();
+    (void)ranges.named();
   } catch (const InputError&) {
   }
   return 0;

@@ -10,7 +10,8 @@
 ///   N threads  the same on 2 threads and on all cores (results identical; checked here).
 /// Usage: bench_diagnose [--points N] [--threads N]   (the last configuration's thread count; default all)
 #include "diagnosis/diagnosis.hpp"
-#include "diagnosis/diagnosis_json.hpp"
+#include "diagnosis/diagnosis_record.hpp"
+#include "io/diagnosis_file.hpp"
 #include "physics/material_spec.hpp"
 
 #include <fmt/core.h>
@@ -89,8 +90,9 @@ int main(int argc, char** argv) {
   print_candidates(one.result);
   const Timed two = run(request, 2, false);
   const Timed all = run(request, threads, false);
-  const std::string text = diagnosis::diagnosis_text(one.result);
-  const bool identical = text == diagnosis::diagnosis_text(two.result) && text == diagnosis::diagnosis_text(all.result);
+  const std::string text = io::diagnosis_text(diagnosis::diagnosis_record(one.result));
+  const bool identical = text == io::diagnosis_text(diagnosis::diagnosis_record(two.result)) &&
+                         text == io::diagnosis_text(diagnosis::diagnosis_record(all.result));
 
   fmt::print("\n## wall time\n");
   fmt::print("baseline (former method, 1 thread)  {:7.2f} s\n", former.seconds);

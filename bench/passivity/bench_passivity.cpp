@@ -12,7 +12,8 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "emit/emit.hpp"
-#include "output/fit_json.hpp"
+#include "io/fit_file.hpp"
+#include "selection/fit_record.hpp"
 #include "selection/fit.hpp"
 
 #include <fmt/core.h>
@@ -51,7 +52,7 @@ void run(const std::string& label, const std::string& path, const std::string& c
   fmt::print("  passive estimates, all orders   {:8.3f} s  ({:.1f} % of the fit, single thread)\n", passive_s,
              100.0 * passive_s / fit_s);
 
-  const auto json = nlohmann::json::parse(fit_to_json(data, read, settings, fit).dump());
+  const auto json = io::parse_fit(io::fit_text(fit_record(data, read, settings, fit)), "fit.json");
   const std::string tpl = codegen::load_template("", "admitgen_boundary.h.in");
   double certified_s = 0.0, plain_s = 0.0;
   int safe = 0, plain_safe = 0, total = 0;

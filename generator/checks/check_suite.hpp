@@ -16,9 +16,8 @@
 
 #include "checks/report.hpp"
 #include "codegen/emission.hpp"
-#include "physics/multipole_surface.hpp"
-
-#include <nlohmann/json.hpp>
+#include "model/fit_record.hpp"
+#include "model/multipole_surface.hpp"
 
 #include <optional>
 #include <string>
@@ -37,14 +36,10 @@ struct CheckSubject {
 
 /// From an emitted header's text (throws InputError if it has no readable admitgen:model block).
 CheckSubject subject_from_header(const std::string& text, const std::string& origin);
-/// From a parsed fit.json: the selected order, or `order`, and the estimate (a fit without a passive
+/// From a fit: the selected order, or `order`, and the estimate (a fit without a passive
 /// estimate, written by an older admitgen, is checked at its posterior mean, and `note` says so).
-CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& origin, const std::string& order,
+CheckSubject subject_from_fit(const FitRecord& fit, const std::string& origin, const std::string& order,
                               Estimate estimate);
-/// Reads FILE.h or FIT.json (decided by content: JSON with schema admitgen.fit/1, else a header).
-/// Throws FileError if the file is unreadable or neither.
-CheckSubject load_subject(const std::string& path, const std::string& order = {}, Estimate estimate = Estimate::passive);
-
 CheckResult check_causality(const CheckSubject& subject);
 CheckResult check_discrete_stability(const CheckSubject& subject);
 CheckResult check_continuous_passivity(const CheckSubject& subject);

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "checks/check_suite.hpp"
 
-#include "core/bounded_read.hpp"
-#include "core/errors.hpp"
 
 #include <fmt/format.h>
 
@@ -24,7 +22,7 @@ CheckSubject subject_from_header(const std::string& text, const std::string& ori
   return s;
 }
 
-CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& origin, const std::string& order,
+CheckSubject subject_from_fit(const FitRecord& fit, const std::string& origin, const std::string& order,
                               Estimate estimate) {
   CheckSubject s;
   s.origin = origin;
@@ -34,27 +32,9 @@ CheckSubject subject_from_fit(const nlohmann::json& fit, const std::string& orig
     s.note = "the fit holds no passive estimate (written by an older admitgen): its posterior mean is checked";
   }
   s.surface = multipole_from_fit(fit, order, estimate, origin, Causality::reported);  // named by check_causality
-  try {
-    s.data_f_min_hz = fit.at("input").at("f_min_hz").get<double>();
-    s.data_f_max_hz = fit.at("input").at("f_max_hz").get<double>();
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: no usable 'input' band ({})", origin, e.what()));
-  }
+  s.data_f_min_hz = fit.input.f_min_hz;
+  s.data_f_max_hz = fit.input.f_max_hz;
   return s;
-}
-
-CheckSubject load_subject(const std::string& path, const std::string& order, Estimate estimate) {
-  const std::string text = read_bounded(path, kMaxDocumentBytes, "fit.json or header");
-  const auto json = nlohmann::json::parse(text, nullptr, false);
-  if (!json.is_discarded()) {
-    const auto schema = json.is_object() ? json.find("schema") : json.end();  // value() throws on a non-string
-    if (schema == json.end() || !schema->is_string() || *schema != "admitgen.fit/1")
-      throw FileError(path, 0, "JSON but not an admitgen fit (schema admitgen.fit/1)");
-    return subject_from_fit(json, path, order, estimate);
-  }
-  if (text.find("admitgen:model") == std::string::npos)
-    throw FileError(path, 0, "neither a fit.json nor a header written by admitgen emit (no admitgen:model block)");
-  return subject_from_header(text, path);
 }
 
 std::string term_location(int fs_hz, const codegen::DiscreteModel& m, bool pair, std::size_t i) {

@@ -7,10 +7,12 @@
 #include "core/errors.hpp"
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
-#include "diagnosis/diagnosis_json.hpp"
-#include "output/fit_reader.hpp"
+#include "diagnosis/diagnosis.hpp"
+#include "diagnosis/diagnosis_record.hpp"
+#include "io/diagnosis_file.hpp"
+#include "io/fit_file.hpp"
 #include "physics/material_spec.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "report/diagnosis_report.hpp"
 
 #include <fmt/core.h>
@@ -26,12 +28,12 @@ using namespace admitgen::diagnosis;
 /// --sim names a CSV when such a file exists, a material SPEC otherwise.
 SimulatedSide simulated_side(const DiagnoseCommand& o, const ReadOptions& read, const Air& air) {
   if (o.fit) {
-    const auto surface = multipole_from_fit(read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
+    const auto surface = multipole_from_fit(io::read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
     return SimulatedSide::from_material(Material{surface}, air, "fit " + *o.fit + " (" + surface.order.name() + ", mean)");
   }
   if (std::filesystem::is_regular_file(*o.sim))
     return SimulatedSide::from_table(read_measurement(*o.sim, read), "table " + *o.sim);
-  return SimulatedSide::from_material(parse_material_spec(*o.sim), air, "SPEC " + *o.sim);
+  return SimulatedSide::from_material(parse_material_spec(*o.sim, io::read_fit_file), air, "SPEC " + *o.sim);
 }
 
 DiagnosisRequest to_request(const DiagnoseCommand& o) {
@@ -44,7 +46,7 @@ DiagnosisRequest to_request(const DiagnoseCommand& o) {
   if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
   DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(tube.temperature_c)), tube,
                      o.settings, std::nullopt};
-  if (o.fs) r.stages = StageRequest{read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
+  if (o.fs) r.stages = StageRequest{io::read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
   return r;
 }
 
@@ -110,8 +112,9 @@ int run_diagnose_command(const DiagnoseCommand& o) {
   Progress progress(!o.quiet);
   const Diagnosis d = run_diagnosis(request, progress);
   const std::string path = (std::filesystem::path(o.out) / "diagnosis.json").string();
-  write_file_atomically(path, diagnosis_text(d));
-  report::write_diagnosis_report(o.out, diagnosis_json(d));
+  const DiagnosisRecord record = diagnosis_record(d);
+  write_file_atomically(path, io::diagnosis_text(record));
+  report::write_diagnosis_report(o.out, record);
   if (!o.quiet) {
     for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
     print_summary(d, path);

@@ -7,7 +7,8 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "emit/emit.hpp"
-#include "output/fit_reader.hpp"
+#include "io/bands_file.hpp"
+#include "io/fit_file.hpp"
 
 #include <fmt/format.h>
 
@@ -74,7 +75,7 @@ int run_emit_command(const EmitCommand& o) {
   const std::string tpl = codegen::load_template(o.templates, "admitgen_boundary.h.in");
   // Everything is computed and checked before anything is written; each file appears whole or not at all.
   const emit::EmitResult result =
-      emit::emit(read_fit_file(o.fit), o.fit, s, tpl, std::filesystem::path(o.out).filename().string());
+      emit::emit(io::read_fit_file(o.fit), o.fit, s, tpl, std::filesystem::path(o.out).filename().string());
   const auto& emission = result.emission;
   const std::string& header = result.header;
   if (!result.safe()) {
@@ -84,7 +85,7 @@ int run_emit_command(const EmitCommand& o) {
     }
     fmt::print(stderr, "warning: --allow-unsafe: {}\n", result.refusal(o.out));
   }
-  const std::string bands = o.bands_json.empty() ? "" : codegen::bands_json(emission).dump(2) + "\n";
+  const std::string bands = o.bands_json.empty() ? "" : io::bands_text(emission);
   const std::string golden = o.golden.empty() ? "" : codegen::golden_vectors(emission, o.golden_seed);
   write_file_atomically(o.out, header);
   if (!o.bands_json.empty()) write_file_atomically(o.bands_json, bands);

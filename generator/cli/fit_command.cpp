@@ -7,11 +7,13 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/evidence.hpp"
-#include "output/fit_json.hpp"
-#include "output/posterior_export.hpp"
+#include "io/fit_file.hpp"
+#include "io/posterior_export.hpp"
+#include "io/priors_file.hpp"
 #include "report/fit_report.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/fit.hpp"
+#include "selection/fit_record.hpp"
 #include "selection/goodness_of_fit.hpp"
 
 #include <fmt/core.h>
@@ -91,7 +93,7 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
   sub->add_option_function<std::string>(
       "--priors",
       [&s](const std::string& path) {
-        s.priors = PriorRanges::from_file(path);
+        s.priors = io::read_priors_file(path);
         s.priors_origin = path;
       },
       "JSON prior ranges overriding Table 1, e.g. {\"lambda\": [0, 2e5]}");
@@ -135,14 +137,14 @@ int run_fit_command(const FitCommand& o) {
                                data.f_hz[data.size() - 1], settings.qmax, settings.smax));
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
-  auto json = fit_to_json(data, read, settings, fit);
-  json["posterior"] = write_posterior_export(o.out, data, settings, fit);  // samples, covariance, bands as CSV
-  write_file_atomically(path, json.dump(2) + "\n");
+  FitRecord record = fit_record(data, read, settings, fit);
+  record.posterior = write_posterior_export(o.out, data, settings, fit);  // samples, covariance, bands as CSV
+  write_file_atomically(path, io::fit_text(record));
   created.keep();
-  report::write_fit_report(o.out, json, data);
+  report::write_fit_report(o.out, record, data);
   if (!o.quiet) {
     print_summary(fit, data);
-    for (const auto& w : json["warnings"]) fmt::print(stderr, "warning: {}\n", w.get<std::string>());
+    for (const auto& w : *record.warnings) fmt::print(stderr, "warning: {}\n", w);
     const auto& chosen = fit.models[fit.selected];
     fmt::print("selected {} ({}); wrote {}\n", chosen.order.name(), settings.rule.describe(), path);
     fmt::print("passive estimate of {} (what emit uses): relative RMS residual {:.3g} % (best sample {:.3g} %), {}\n",

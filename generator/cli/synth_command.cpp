@@ -4,6 +4,7 @@
 #include "cli/options.hpp"
 #include "data/csv_writer.hpp"
 #include "data/read_options.hpp"
+#include "io/fit_file.hpp"
 #include "physics/material_spec.hpp"
 #include "physics/synthetic_measurement.hpp"
 
@@ -69,7 +70,7 @@ void setup_synth_command(CLI::App& app, int& exit_code) {
 int run_synth_command(const SynthCommand& o) {
   const Band band = Band::parse(o.band);
   SynthesisRequest request = o.request;
-  request.material = parse_material_spec(o.material);
+  request.material = parse_material_spec(o.material, io::read_fit_file);
   request.f_hz = log_spaced_frequencies(band.lo_hz, band.hi_hz, o.points);
   for (const auto& text : o.effects) request.effects.push_back(parse_effect(text));
   const Synthesis result = synthesize(request);

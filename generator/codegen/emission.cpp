@@ -8,6 +8,7 @@
 #include "core/version.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
@@ -43,16 +44,12 @@ std::string join(const std::vector<std::string>& parts, const char* sep) {
   return s;
 }
 
-std::vector<double> data_frequencies(const nlohmann::json& fit, const std::string& origin) {
-  std::vector<double> f;
-  if (fit.contains("predictive") && fit["predictive"].contains("f_hz"))
-    for (const auto& v : fit["predictive"]["f_hz"]) f.push_back(v.get<double>());
-  if (!f.empty()) return f;
+std::vector<double> data_frequencies(const FitRecord& fit) {
+  if (fit.predictive && !fit.predictive->f_hz.empty()) return fit.predictive->f_hz;
   // Older fits: log-spaced points over the data range (what the refit needs is the band, not the grid).
-  if (!fit.contains("input")) throw InputError(fmt::format("{}: no 'input' member (data range)", origin));
-  const auto& in = fit["input"];
-  const double lo = in.at("f_min_hz").get<double>(), hi = in.at("f_max_hz").get<double>();
-  const int n = std::max(16, in.value("points", 200));
+  std::vector<double> f;
+  const double lo = fit.input.f_min_hz, hi = fit.input.f_max_hz;
+  const auto n = static_cast<int>(std::max<std::int64_t>(16, fit.input.points));
   for (int i = 0; i < n; ++i) f.push_back(lo * std::pow(hi / lo, double(i) / (n - 1)));
   return f;
 }
@@ -283,18 +280,14 @@ void validate(const EmitSettings& settings) {
 
 }  // namespace
 
-EmissionSource read_emission_source(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings) {
+EmissionSource read_emission_source(const FitRecord& fit, const std::string& fit_path, const EmitSettings& settings) {
   EmissionSource e;
   e.estimate = settings.estimate;
   e.surface = multipole_from_fit(fit, settings.order, settings.estimate, fit_path);
-  try {
-    e.fit_version = fit.value("version", std::string("unknown"));
-    e.input_sha256 = fit.at("input").at("sha256").get<std::string>();
-    e.seed = fit.at("settings").at("seed").get<std::uint64_t>();
-    e.data_f_hz = data_frequencies(fit, fit_path);
-  } catch (const nlohmann::json::exception& ex) {
-    throw InputError(fmt::format("{}: not a usable fit.json ({})", fit_path, ex.what()));
-  }
+  e.fit_version = fit.version;
+  e.input_sha256 = fit.input.sha256;
+  e.seed = fit.settings.seed;
+  e.data_f_hz = data_frequencies(fit);
   const std::size_t slash = fit_path.find_last_of('/');
   e.fit_name = slash == std::string::npos ? fit_path : fit_path.substr(slash + 1);
   return e;
@@ -323,9 +316,21 @@ Emission prepare_emission(const EmissionSource& source, const EmitSettings& sett
   return e;
 }
 
-Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings) {
+Emission prepare_emission(const FitRecord& fit, const std::string& fit_path, const EmitSettings& settings) {
   validate(settings);
   return prepare_emission(read_emission_source(fit, fit_path, settings), settings);
+}
+
+namespace {
+
+Json enforcement_json(const std::optional<PassivityEnforcement>& p) {
+  if (!p) return nullptr;
+  return Json{{"applied_to", p->applied_to},
+              {"negative_bands_before", p->negative_bands_before},
+              {"certified", p->certified},
+              {"constraint_rounds", p->constraint_rounds},
+              {"max_rel_change_in_data_band", p->max_rel_change_in_data_band},
+              {"max_rel_change_outside_data_band", p->max_rel_change_outside_data_band}};
 }
 
 Json emission_json(const Emission& e) {
@@ -343,7 +348,7 @@ Json emission_json(const Emission& e) {
     rates.push_back(j);
   }
   const auto names = e.surface.order.parameter_names();
-  return Json{{"schema", "admitgen.emit/1"},
+  return Json{{"schema", kModelBlockSchema},
               {"version", kVersion},
               {"abi", kRuntimeAbi},
               {"name", e.settings.name},
@@ -357,9 +362,13 @@ Json emission_json(const Emission& e) {
               {"data_f_min_hz", *std::min_element(e.data_f_hz.begin(), e.data_f_hz.end())},
               {"data_f_max_hz", *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end())},
               {"notes", e.notes},
-              {"passivity_enforcement", e.enforcement},
+              {"passivity_enforcement", enforcement_json(e.enforcement)},
               {"rates", rates}};
 }
+
+}  // namespace
+
+std::string model_block(const Emission& e) { return emission_json(e).dump(); }
 
 std::string render_header(const Emission& e, const std::string& template_text, const std::string& file_name) {
   TemplateContext c;
@@ -401,7 +410,7 @@ std::string render_header(const Emission& e, const std::string& template_text, c
               {"bits_doc", s.format == Format::q15 ? "15" : "31"},
               {"order_q", std::to_string(e.surface.order.q())},
               {"order_s", std::to_string(e.surface.order.s())}};
-  std::string json = emission_json(e).dump();
+  std::string json = model_block(e);
   for (std::size_t p = 0; (p = json.find("*/", p)) != std::string::npos;) json.replace(p, 2, "*\\/");
   c.values["model_json"] = json;
   const auto names = e.surface.order.parameter_names();
@@ -416,25 +425,6 @@ std::string render_header(const Emission& e, const std::string& template_text, c
   c.lists["octave"] = band_rows(e.octave);
   c.lists["third"] = band_rows(e.third_octave);
   return render_template(template_text, c);
-}
-
-Json bands_json(const Emission& e) {
-  auto rows = [](const std::vector<BandAbsorption>& bands) {
-    Json a = Json::array();
-    for (const auto& b : bands)
-      a.push_back({{"center_hz", b.center_hz}, {"lo_hz", b.lo_hz}, {"hi_hz", b.hi_hz}, {"alpha_normal", b.alpha_normal},
-                   {"alpha_random", b.alpha_random}, {"in_data", b.in_data}});
-    return a;
-  };
-  return Json{{"schema", "admitgen.bands/1"},
-              {"version", kVersion},
-              {"name", e.settings.name},
-              {"order", e.surface.order.name()},
-              {"input_sha256", e.input_sha256},
-              {"method", "mean over 32 log-spaced frequencies per band; normal incidence 1-|R|^2, R=(1-G)/(1+G); "
-                         "random incidence: locally reacting, London/Kuttruff closed form"},
-              {"octave", rows(e.octave)},
-              {"third_octave", rows(e.third_octave)}};
 }
 
 std::string golden_vectors(const Emission& e, std::uint64_t seed) {
@@ -474,6 +464,10 @@ EmittedHeader read_emitted_header(const std::string& text, const std::string& or
   std::string json = text.substr(b + begin.size(), x - b - begin.size());
   try {
     const auto j = nlohmann::json::parse(json);
+    if (!j.is_object() || !j.contains("schema") || j.at("schema") != kModelBlockSchema)
+      throw InputError(fmt::format("{}: admitgen:model block: schema {} (this admitgen reads {})", origin,
+                                   j.is_object() && j.contains("schema") ? j.at("schema").dump() : "missing",
+                                   kModelBlockSchema));
     EmittedHeader h;
     h.format = parse_format(j.at("format").get<std::string>());
     h.name = j.at("name").get<std::string>();

@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// `admitgen emit` as a library: fit.json → discrete models per sample rate → quantised tables →
-/// the generated C header (templates/admitgen_boundary.h.in), band-absorption JSON, golden vectors,
-/// and the reader of a header's machine-readable block (what `admitgen check` verifies).
+/// `admitgen emit` as a library: a fit's record (model/fit_record.hpp) → discrete models per sample
+/// rate → quantised tables → the generated C header (templates/admitgen_boundary.h.in), band
+/// absorption, golden vectors, and the writer and reader of a header's model block (what `admitgen
+/// check` verifies; docs/formats.md).
 #pragma once
 
 #include "codegen/band_absorption.hpp"
 #include "codegen/coefficients.hpp"
 #include "codegen/discrete_model.hpp"
-#include "physics/multipole_surface.hpp"
-
-#include <nlohmann/json.hpp>
+#include "model/multipole_surface.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -22,6 +21,9 @@ namespace admitgen::codegen {
 
 /// Runtime ABI the generated headers are written for (must equal ADMITGEN_RT_ABI_VERSION).
 inline constexpr int kRuntimeAbi = 1;
+
+/// Schema identifier of a header's model block (model_block, read_emitted_header).
+inline constexpr const char* kModelBlockSchema = "admitgen.emit/1";
 
 struct EmitSettings {
   std::vector<double> fs_hz;
@@ -38,6 +40,15 @@ struct EmitSettings {
   double passive_margin = 1e-9;
 };
 
+/// What emit changed to make the continuous model passive (stamped in the header's model block).
+struct PassivityEnforcement {
+  std::string applied_to;             ///< the estimate changed: passive | mean | max_likelihood
+  std::string negative_bands_before;  ///< where Re G < 0 before
+  bool certified = false;             ///< the result passes the Hamiltonian test
+  int constraint_rounds = 0;
+  double max_rel_change_in_data_band = 0.0, max_rel_change_outside_data_band = 0.0;
+};
+
 /// The continuous model to emit and where it came from (the fit), before discretisation.
 struct EmissionSource {
   MultipoleSurface surface{Order(0, 0), Eigen::VectorXd::Zero(1)};
@@ -48,7 +59,7 @@ struct EmissionSource {
   std::vector<double> data_f_hz;
   /// Lines stamped into the header comment and the model block (e.g. how passivity was enforced).
   std::vector<std::string> notes;
-  nlohmann::ordered_json enforcement;  ///< machine-readable record of a passivity enforcement (null: none)
+  std::optional<PassivityEnforcement> enforcement;  ///< how passivity was enforced (none: it was not needed)
 };
 
 struct EmittedRate {
@@ -64,31 +75,32 @@ struct Emission : EmissionSource {
   std::vector<BandAbsorption> octave, third_octave;
 };
 
-/// Reads the model to emit from a parsed fit.json: settings.order (empty: the selected one) and
-/// settings.estimate. Throws InputError if the fit lacks it.
-EmissionSource read_emission_source(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings);
+/// Takes the model to emit from a fit: settings.order (empty: the selected one) and settings.estimate.
+/// Throws InputError if the fit lacks it.
+EmissionSource read_emission_source(const FitRecord& fit, const std::string& fit_path, const EmitSettings& settings);
 
 /// Validates the settings (rates integral in [1 kHz, 1 MHz], distinct; name a C identifier) and
 /// computes everything. Throws InputError on bad input.
 Emission prepare_emission(const EmissionSource& source, const EmitSettings& settings);
 /// read_emission_source, then prepare_emission.
-Emission prepare_emission(const nlohmann::json& fit, const std::string& fit_path, const EmitSettings& settings);
+Emission prepare_emission(const FitRecord& fit, const std::string& fit_path, const EmitSettings& settings);
 
 /// The header text from the template text (deterministic: no timestamp; byte-identical on re-run).
 std::string render_header(const Emission& emission, const std::string& template_text, const std::string& file_name);
 
-/// Machine-readable description of exactly what the header emits (schema "admitgen.emit/1"); the header
-/// carries it between "admitgen:model" and "admitgen:end" markers.
-nlohmann::ordered_json emission_json(const Emission& emission);
-
-/// Band absorption (octave and one-third octave, normal and random incidence) as JSON.
-nlohmann::ordered_json bands_json(const Emission& emission);
+/// The header's model block (docs/formats.md, "Emitted header"): the machine-readable description of
+/// exactly what the header emits, schema "admitgen.emit/1", as one line of JSON; the header carries it
+/// between "admitgen:model" and "admitgen:end" markers. Its one writer; read_emitted_header is its one
+/// reader. (Both stay beside the header template: emit checks the header it renders before writing it,
+/// so the library needs them, not only the command line.)
+std::string model_block(const Emission& emission);
 
 /// Bit-exact golden vectors of the first rate (q31/q15 only): impulse, worst-case sign, uniform noise at
 /// −6 dBFS from Rng(seed), zeros; input and expected output in decimal with a hex comment.
 std::string golden_vectors(const Emission& emission, std::uint64_t seed);
 
-/// What a header emitted: read back from its machine-readable block (throws InputError if absent).
+/// What a header emitted: read back from its model block (throws InputError if absent or unreadable,
+/// naming the key and value).
 struct EmittedHeader {
   Format format = Format::f32;
   std::string name;

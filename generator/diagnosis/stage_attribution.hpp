@@ -18,10 +18,9 @@
 
 #include "codegen/coefficients.hpp"
 #include "diagnosis/gap_metrics.hpp"
+#include "model/fit_record.hpp"
 #include "physics/synthetic_measurement.hpp"
 #include "simulation/impedance_tube_fdtd.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -29,7 +28,7 @@
 namespace admitgen::diagnosis {
 
 struct StageRequest {
-  nlohmann::json fit;    ///< the parsed fit.json
+  FitRecord fit;         ///< the fit (fit.json)
   std::string fit_path;  ///< for messages
   double fs_hz = 48000.0;
   codegen::Format format = codegen::Format::q31;

@@ -83,16 +83,12 @@ void enforce_continuous_passivity(codegen::EmissionSource& source) {
       "it ({:.4g} Hz/100 to {:.4g} Hz x 100)",
       estimate_name(source.estimate), bands, p.certified ? "certified by the Hamiltonian test" : "NOT certified",
       in_band, out_band, f_lo, f_hi));
-  source.enforcement = {{"applied_to", estimate_name(source.estimate)},
-                        {"negative_bands_before", bands},
-                        {"certified", p.certified},
-                        {"constraint_rounds", p.rounds},
-                        {"max_rel_change_in_data_band", in_band},
-                        {"max_rel_change_outside_data_band", out_band}};
+  source.enforcement = codegen::PassivityEnforcement{estimate_name(source.estimate), bands, p.certified, p.rounds,
+                                                     in_band, out_band};
   source.surface.theta = p.theta;
 }
 
-EmitResult emit(const nlohmann::json& fit, const std::string& fit_path, codegen::EmitSettings settings,
+EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::EmitSettings settings,
                 const std::string& template_text, const std::string& header_file_name) {
   codegen::EmissionSource source;
   if (settings.estimate == Estimate::passive && !fit_has_passive_estimate(fit, settings.order, fit_path)) {

@@ -14,8 +14,7 @@
 
 #include "checks/report.hpp"
 #include "codegen/emission.hpp"
-
-#include <nlohmann/json.hpp>
+#include "model/fit_record.hpp"
 
 #include <string>
 #include <vector>
@@ -32,7 +31,7 @@ struct EmitResult {
 };
 
 /// Everything `admitgen emit` computes, before anything is written. Throws InputError on bad input.
-EmitResult emit(const nlohmann::json& fit, const std::string& fit_path, codegen::EmitSettings settings,
+EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::EmitSettings settings,
                 const std::string& template_text, const std::string& header_file_name);
 
 /// Step 2's certifier (what the discrete refit is given): for each band of the filter where Re H < 0

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "inference/priors.hpp"
 
-#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 
 #include <algorithm>
@@ -46,35 +45,16 @@ void PriorRanges::validate(const std::string& origin) const {
                                  "half plane)", origin));
 }
 
-PriorRanges PriorRanges::from_file(const std::string& path) {
-  const std::string text = read_bounded(path, kMaxDocumentBytes, "prior file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow (1e999)
-    throw FileError(path, 0, fmt::format("not valid JSON: {}", e.what()));
-  }
-  if (!j.is_object()) throw FileError(path, 0, "expected a JSON object of {\"family\": [lo, hi]}");
-  PriorRanges ranges = table1();
-  for (const auto& item : j.items()) {
-    const std::string& key = item.key();  // a named variable: lambdas cannot capture structured bindings in C++17
-    const auto& value = item.value();
-    const auto* entry = std::find_if(std::begin(kFamilyKeys), std::end(kFamilyKeys),
-                                     [&](const auto& kv) { return key == kv.second; });
-    if (entry == std::end(kFamilyKeys))
-      throw FileError(path, 0, "unknown prior key (expected G_inf, A, lambda, B, C, alpha, beta)", key);
-    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
-      throw FileError(path, 0, fmt::format("prior '{}' must be [lo, hi]", key), value.dump());
-    ranges.of(entry->first) = Range{value[0].get<double>(), value[1].get<double>()};
-  }
-  ranges.validate(path);
-  return ranges;
+Range* PriorRanges::find(const std::string& key) {
+  for (const auto& [family, name] : kFamilyKeys)
+    if (key == name) return &of(family);
+  return nullptr;
 }
 
-nlohmann::ordered_json PriorRanges::to_json() const {
-  nlohmann::ordered_json j;
-  for (const auto& [family, key] : kFamilyKeys) j[key] = {of(family).lo, of(family).hi};
-  return j;
+std::vector<std::pair<std::string, Range>> PriorRanges::named() const {
+  std::vector<std::pair<std::string, Range>> out;
+  for (const auto& [family, key] : kFamilyKeys) out.emplace_back(key, of(family));
+  return out;
 }
 
 PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bool reduce_symmetry)

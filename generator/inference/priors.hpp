@@ -19,9 +19,9 @@
 
 #include "model/order.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace admitgen {
 
@@ -42,15 +42,16 @@ struct PriorRanges {
 
   /// Paper Table 1 (s⁻¹; fits 0.1-4 kHz data).
   static PriorRanges table1() { return {}; }
-  /// Table 1 overridden by a JSON file {"G_inf": [lo, hi], "A": [...], "lambda": [...], "B": [...],
-  /// "C": [...], "alpha": [...], "beta": [...]} (any subset). Throws InputError naming the file and key.
-  static PriorRanges from_file(const std::string& path);
 
   const Range& of(Family f) const;
   Range& of(Family f);
   /// Throws InputError unless every lo < hi and λ, α ranges start at ≥ 0 (causality).
   void validate(const std::string& origin) const;
-  nlohmann::ordered_json to_json() const;
+  /// (file key, range) of every family, in the prior file's key order (G_inf, A, lambda, B, C, alpha, beta).
+  std::vector<std::pair<std::string, Range>> named() const;
+  /// The range of the family with that prior-file key, nullptr for an unknown key (the prior file,
+  /// io/priors_file.hpp, overrides Table 1 by these keys).
+  Range* find(const std::string& key);
 };
 
 /// Maps u ∈ [0,1]^dim to θ under the priors (uniform, or uniform on the reduced space).

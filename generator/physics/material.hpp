@@ -6,7 +6,7 @@
 #pragma once
 
 #include "physics/air.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "physics/transfer_matrix.hpp"
 
 #include <Eigen/Core>

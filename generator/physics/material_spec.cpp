@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "physics/material_spec.hpp"
 
-#include "core/bounded_read.hpp"
 #include "core/errors.hpp"
 #include "physics/parameter_list.hpp"
 
@@ -93,7 +92,7 @@ MultipoleSurface parse_multipole(const Item& item, const std::string& context) {
   return multipole_from_parameters(values, where);
 }
 
-MultipoleSurface parse_fit(const Item& item, const std::string& context) {
+MultipoleSurface parse_fit(const Item& item, const std::string& context, const FitReader& read_fit) {
   ParameterList p(fmt::format("{}, fit", context), item.params);
   const auto file = p.text("file");
   if (!file) throw InputError(p.error("missing parameter 'file' (the fit.json to read)"));
@@ -102,19 +101,13 @@ MultipoleSurface parse_fit(const Item& item, const std::string& context) {
   p.finish();
   if (estimate != "mean" && estimate != "max_likelihood")
     throw InputError(p.error(fmt::format("estimate '{}': expected mean or max_likelihood", estimate)));
-  const std::string text = read_bounded(*file, kMaxDocumentBytes, "fit.json");
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw FileError(*file, 0, fmt::format("not valid JSON ({})", e.what()));
-  }
-  return multipole_from_fit(doc, order, estimate == "mean" ? Estimate::mean : Estimate::max_likelihood, *file);
+  if (!read_fit) throw InputError(p.error("fit(...) is not available here (no fit reader)"));
+  return multipole_from_fit(read_fit(*file), order, estimate == "mean" ? Estimate::mean : Estimate::max_likelihood, *file);
 }
 
 }  // namespace
 
-Material parse_material_spec(const std::string& spec) {
+Material parse_material_spec(const std::string& spec, const FitReader& read_fit) {
   const std::string context = fmt::format("material '{}'", spec);
   for (const char c : spec)
     if (std::iscntrl(static_cast<unsigned char>(c)))
@@ -125,7 +118,7 @@ Material parse_material_spec(const std::string& spec) {
     if (items.size() != 1)
       throw InputError(fmt::format("{}: {}(...) is a whole surface and cannot be combined with layers", context,
                                    items.front().name));
-    return items.front().name == "multipole" ? parse_multipole(items.front(), context) : parse_fit(items.front(), context);
+    return items.front().name == "multipole" ? parse_multipole(items.front(), context) : parse_fit(items.front(), context, read_fit);
   }
   LayeredAbsorber absorber;
   for (const auto& item : items) {

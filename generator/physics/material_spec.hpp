@@ -29,14 +29,20 @@
 /// a three-layer MPP absorber `mpp(hole=0.4mm,t=0.4mm,p=1%) + air(d=30mm) + mpp(…) + air(…) + mpp(…) + air(…)`.
 #pragma once
 
+#include "model/fit_record.hpp"
 #include "physics/material.hpp"
 
+#include <functional>
 #include <string>
 
 namespace admitgen {
 
-/// Parses SPEC (reading the fit.json a `fit(...)` names). Throws InputError quoting the SPEC and
-/// saying what is wrong: unknown layer, missing, unknown or out-of-range parameter, bad syntax.
-Material parse_material_spec(const std::string& spec);
+/// Reads the fit file at a path (the command line passes io::read_fit_file).
+using FitReader = std::function<FitRecord(const std::string& path)>;
+
+/// Parses SPEC (reading the fit.json a `fit(...)` names with `read_fit`; without it, `fit(...)` is
+/// refused). Throws InputError quoting the SPEC and saying what is wrong: unknown layer, missing, unknown
+/// or out-of-range parameter, bad syntax.
+Material parse_material_spec(const std::string& spec, const FitReader& read_fit = {});
 
 }  // namespace admitgen

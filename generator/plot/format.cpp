@@ -46,6 +46,12 @@ std::string hz_label(double f) {
   return trim_zeros(fmt::format("{:.2f}", f));
 }
 
+std::string json_number(double v) {
+  std::string s = fmt::format("{}", v);
+  if (s.find_first_of(".en") == std::string::npos) s += ".0";  // "1e-05", "inf", "nan" stay as they are
+  return s;
+}
+
 std::string number(double v, int digits) {
   if (!std::isfinite(v)) return std::isnan(v) ? "NaN" : (v > 0 ? "∞" : "−∞");
   const double a = std::abs(v);

@@ -24,6 +24,10 @@ std::string hz_label(double f);
 /// −0 as 0.
 std::string number(double v, int digits = 4);
 
+/// A number as the JSON files print it (shortest digits that read back exactly; integral values keep
+/// ".0": 0.01, 413.3, 100.0), for quoting settings as the user finds them in fit.json.
+std::string json_number(double v);
+
 /// A frequency with 3 significant digits and its unit: 243 Hz, 9.34 kHz.
 std::string frequency(double f_hz);
 

@@ -10,44 +10,40 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 namespace admitgen::report {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using diagnosis::BandEdges;
+using diagnosis::BandGapRecord;
+using diagnosis::DiagnosisRecord;
+using diagnosis::StageRecord;
 using plot::escape_xml;
 using plot::number;
-
-std::string text_of(const Json& j, const char* key, const std::string& fallback = "?") {
-  if (!j.contains(key) || j[key].is_null()) return fallback;
-  return j[key].is_string() ? j[key].get<std::string>() : j[key].dump();
-}
 
 /// A band's nominal centre in Hz without trailing zeros: 630, 1250, 31.5.
 std::string nominal(double f_center) { return fmt::format("{:.6g}", plot::nominal_band(f_center)); }
 
-std::string band_text(const Json& band) {
-  return fmt::format("{} Hz band ({}–{} Hz)", nominal(band.value("f_center", 1.0)),
-                     number(band.value("f_lo", 0.0), 3), number(band.value("f_hi", 0.0), 3));
+std::string band_text(const BandEdges& band) {
+  return fmt::format("{} Hz band ({}–{} Hz)", nominal(band.f_center), number(band.f_lo, 3), number(band.f_hi, 3));
 }
 
 /// Bars of one gap-per-band list on a log axis, each shrunk around its band's log-centre by `keep`
 /// (fraction of the band's log-width), so that before and after sit side by side in one band.
-plot::Series band_bars(const std::string& name, const std::string& label, const std::string& tone, const Json& bands,
-                       double keep) {
+plot::Series band_bars(const std::string& name, const std::string& label, const std::string& tone,
+                       const std::vector<BandGapRecord>& bands, double keep) {
   std::vector<double> lo, hi, gap;
   for (const auto& b : bands) {
-    const double a = b.value("f_lo", std::nan("")), c = b.value("f_hi", std::nan(""));
+    const double a = b.band.f_lo, c = b.band.f_hi;
     const double half = 0.5 * keep * std::log(c / a), mid = 0.5 * std::log(a * c);
     lo.push_back(std::exp(mid - half));
     hi.push_back(std::exp(mid + half));
-    gap.push_back(b.value("gap", std::nan("")));
+    gap.push_back(b.gap);
   }
   return plot::bars(name, label, tone, lo, hi, gap);
 }
 
-plot::Figure gap_figure(const Json& d) {
+plot::Figure gap_figure(const DiagnosisRecord& d) {
   plot::Figure fig("fig-gap", "Gap per one-third-octave band before and after the best effect");
   fig.x.label = "one-third-octave band [Hz]";
   fig.x.kind = plot::ScaleKind::log;
@@ -56,34 +52,32 @@ plot::Figure gap_figure(const Json& d) {
   fig.y.kind = plot::ScaleKind::linear;
   fig.y.style = plot::LabelStyle::plain;
   fig.y.include_zero = true;
-  const Json& bands = d["gap"]["bands"];
+  const auto& bands = d.gap.bands;
   if (!bands.empty()) {  // the axis spans the bands' edges, not just the bars, and names each band
-    fig.x.lo = bands.front().value("f_lo", 1.0);
-    fig.x.hi = bands.back().value("f_hi", 2.0);
+    fig.x.lo = bands.front().band.f_lo;
+    fig.x.hi = bands.back().band.f_hi;
     for (const auto& b : bands) {
-      const double centre = b.value("f_center", 1.0);
+      const double centre = b.band.f_center;
       fig.x.ticks.push_back({centre, plot::hz_label(plot::nominal_band(centre)), false});
     }
   }
   fig.add(band_bars("before", "no effect", "data", bands, 0.84));
-  const Json effects = d.value("effects", Json::array());
-  if (!effects.empty())
-    fig.add(band_bars("after", "with " + effects[0].value("effect", std::string("?")), "c1",
-                      effects[0].value("bands_after", Json::array()), 0.46));
+  if (!d.effects.empty())
+    fig.add(band_bars("after", "with " + d.effects[0].effect, "c1", d.effects[0].bands_after, 0.46));
   return fig;
 }
 
-plot::Figure stage_figure(const Json& stages) {
+plot::Figure stage_figure(const std::vector<StageRecord>& stages) {
   plot::Figure fig("fig-stages", "Gap added by each pipeline stage and cumulative gap", 720.0, 300.0);
   std::vector<double> lo, hi, own, x, cumulative;
   for (std::size_t i = 0; i < stages.size(); ++i) {
     const double c = static_cast<double>(i);
-    fig.x.categories.push_back(stages[i].value("stage", std::string("?")));
+    fig.x.categories.push_back(stages[i].stage);
     lo.push_back(c - 0.3);
     hi.push_back(c + 0.3);
-    own.push_back(stages[i].value("gap", std::nan("")));
+    own.push_back(stages[i].gap);
     x.push_back(c);
-    cumulative.push_back(stages[i].contains("cumulative") ? stages[i]["cumulative"].value("gap", std::nan("")) : std::nan(""));
+    cumulative.push_back(stages[i].cumulative_gap);
   }
   fig.x.label = "pipeline stage";
   fig.y.label = "gap (relative complex error)";
@@ -96,166 +90,132 @@ plot::Figure stage_figure(const Json& stages) {
   return fig;
 }
 
-std::string parameters_text(const Json& effect) {
+std::string parameters_text(const diagnosis::EffectRecord& effect) {
   std::string out;
-  const Json summary = effect.value("parameter_summary", Json::object());
-  const Json fixed = effect.value("fixed_parameters", Json::object());
-  for (const auto& [name, s] : summary.items()) {
-    const auto ci = s.value("ci95", std::vector<double>{});
-    out += fmt::format("{}<code>{}</code> = {} ± {}", out.empty() ? "" : "<br/>", escape_xml(name),
-                       number(s.value("mean", 0.0)), number(s.value("std", 0.0), 2));
-    if (ci.size() == 2) out += fmt::format(" <span class=\"muted\">[{}, {}]</span>", number(ci[0]), number(ci[1]));
+  for (const auto& s : effect.parameter_summary) {
+    out += fmt::format("{}<code>{}</code> = {} ± {}", out.empty() ? "" : "<br/>", escape_xml(s.name), number(s.mean),
+                       number(s.std, 2));
+    out += fmt::format(" <span class=\"muted\">[{}, {}]</span>", number(s.ci95_lo), number(s.ci95_hi));
   }
-  for (const auto& [name, v] : fixed.items())
-    out += fmt::format("{}<code>{}</code> = {} (fixed)", out.empty() ? "" : "<br/>", escape_xml(name),
-                       number(v.get<double>()));
+  for (const auto& [name, v] : effect.fixed_parameters)
+    out += fmt::format("{}<code>{}</code> = {} (fixed)", out.empty() ? "" : "<br/>", escape_xml(name), number(v));
   return out.empty() ? "—" : out;
 }
 
-std::string effect_table(const Json& d) {
+std::string effect_table(const DiagnosisRecord& d) {
   Table t{{"rank", "effect", "Bayes factor [dB]", "gap after", "shrink", "explained", "worst band [Hz]", "parameters (posterior)"},
           {}, {0, 2, 3, 4, 5}, {}, {}};
-  const std::string chosen = d["verdict"].value("effect", std::string("none"));
   int rank = 1;
-  for (const auto& e : d.value("effects", Json::array())) {
-    const std::string name = e.value("effect", std::string("?"));
-    const bool stopped = e.value("stopped_early", false);
-    t.rows.push_back({std::to_string(rank++), "<code>" + escape_xml(name) + "</code>",
-                      fmt::format("{:.1f}{}", e.value("log_bayes_factor_deciban", 0.0), stopped ? " (stopped early)" : ""),
-                      number(e.value("gap_after", 0.0), 4),
-                      fmt::format("{:.2f}×", e.value("shrink", 1.0)),
-                      fmt::format("{:.0f} %", 100.0 * e.value("explained_fraction", 0.0)),
-                      nominal(e["band"].value("f_center", 1.0)), parameters_text(e)});
-    t.row_classes.push_back(name == chosen ? "selected" : "");
+  for (const auto& e : d.effects) {
+    t.rows.push_back({std::to_string(rank++), "<code>" + escape_xml(e.effect) + "</code>",
+                      fmt::format("{:.1f}{}", e.log_bayes_factor_deciban, e.stopped_early.value_or(false) ? " (stopped early)" : ""),
+                      number(e.gap_after, 4),
+                      fmt::format("{:.2f}×", e.shrink), fmt::format("{:.0f} %", 100.0 * e.explained_fraction),
+                      nominal(e.band.f_center), parameters_text(e)});
+    t.row_classes.push_back(e.effect == d.verdict.effect ? "selected" : "");
   }
   t.caption = fmt::format(
       "Effects ranked by the Bayes factor of the simulated side plus the effect against the simulated side alone. "
       "Gap before: {}. Shrink = gap before / gap after over the whole data; explained = share of the squared gap "
       "removed. Decision rule: {}. An effect marked \"stopped early\" stayed far below the leading evidence, so its "
       "sampling was cut short and its Bayes factor is the estimate at the stop.",
-      number(d["gap"].value("total", 0.0), 4), escape_xml(text_of(d["verdict"], "rule")));
+      number(d.gap.total, 4), escape_xml(d.verdict.rule));
   return html(t);
 }
 
-std::string stage_table(const Json& stages) {
+std::string stage_table(const std::vector<StageRecord>& stages) {
   Table t{{"stage", "gap of this stage", "cumulative gap", "worst band", "detail"}, {}, {1, 2}, {}, {}};
   for (const auto& s : stages)
-    t.rows.push_back({escape_xml(s.value("stage", std::string("?"))), number(s.value("gap", 0.0), 4),
-                      s.contains("cumulative") ? number(s["cumulative"].value("gap", 0.0), 4) : "—",
-                      s.contains("worst_band") ? escape_xml(band_text(s["worst_band"])) : "—",
-                      escape_xml(text_of(s, "detail", ""))});
+    t.rows.push_back({escape_xml(s.stage), number(s.gap, 4), number(s.cumulative_gap, 4),
+                      escape_xml(band_text(s.worst_band)), escape_xml(s.detail.value_or(""))});
   return html(t);
 }
 
-std::string gap_summary(const Json& gap) {
-  const Json w = gap.value("whiteness", Json::object());
+std::string gap_summary(const diagnosis::GapRecord& gap) {
+  const auto& w = gap.whiteness;
   return definitions(
-      {{"gap", fmt::format("{} (real part {}, imaginary part {})", number(gap.value("total", 0.0), 4),
-                           number(gap.value("total_re", 0.0), 4), number(gap.value("total_im", 0.0), 4))},
-       {"metric", escape_xml(text_of(gap, "metric"))},
-       {"largest |Δα|", number(gap.value("delta_alpha_max", 0.0), 3)},
-       {"worst band", escape_xml(band_text(gap.value("worst_band", Json::object())))},
-       {"residual", fmt::format("{} (lag-1 autocorrelation {}, z = {})", w.value("white", false) ? "white" : "structured",
-                                number(w.value("lag1", 0.0), 3), number(w.value("z", 0.0), 3))}});
+      {{"gap", fmt::format("{} (real part {}, imaginary part {})", number(gap.total, 4), number(gap.total_re, 4),
+                           number(gap.total_im, 4))},
+       {"metric", escape_xml(gap.metric)},
+       {"largest |Δα|", number(gap.delta_alpha_max, 3)},
+       {"worst band", escape_xml(band_text(gap.worst_band))},
+       {"residual", fmt::format("{} (lag-1 autocorrelation {}, z = {})", w.white ? "white" : "structured",
+                                number(w.lag1, 3), number(w.z, 3))}});
 }
 
-std::string provenance(const Json& d) {
-  const Json in = d.value("input", Json::object()), s = d.value("settings", Json::object());
-  const Json real = in.value("real", Json::object());
+std::string provenance(const DiagnosisRecord& d) {
+  const auto& in = d.input;
+  const auto& s = d.settings;
   return definitions(
-      {{"measured", "<code>" + escape_xml(text_of(real, "path")) + "</code>"},
-       {"SHA-256", "<code>" + escape_xml(text_of(real, "sha256")) + "</code>"},
-       {"simulated", escape_xml(text_of(in, "sim"))},
-       {"points", fmt::format("{} from {} Hz to {} Hz", text_of(in, "points"), number(in.value("f_min_hz", 0.0)),
-                              number(in.value("f_max_hz", 0.0)))},
-       {"sampler", fmt::format("nested sampling, {} live points, Δln Z {}, seed {}", text_of(s, "live"), text_of(s, "dlogz"),
-                               text_of(s, "seed"))},
-       {"likelihood", escape_xml(text_of(s, "likelihood"))},
-       {"admitgen", escape_xml(text_of(d, "version"))}});
+      {{"measured", "<code>" + escape_xml(in.real_path) + "</code>"},
+       {"SHA-256", "<code>" + escape_xml(in.real_sha256) + "</code>"},
+       {"simulated", escape_xml(in.sim)},
+       {"points", fmt::format("{} from {} Hz to {} Hz", in.points, number(in.f_min_hz), number(in.f_max_hz))},
+       {"sampler", fmt::format("nested sampling, {} live points, Δln Z {}, seed {}", s.live, plot::json_number(s.dlogz),
+                               s.seed)},
+       {"likelihood", escape_xml(s.likelihood)},
+       {"admitgen", escape_xml(d.version)}});
 }
 
 }  // namespace
 
-std::string verdict_sentence(const Json& d) {
-  const Json v = d.value("verdict", Json::object());
-  const std::string effect = v.value("effect", std::string("none"));
-  const Json effects = d.value("effects", Json::array());
-  if (effect == "none") {
-    if (effects.empty()) return "No effect was tested, so the gap stays unexplained.";
+std::string verdict_sentence(const DiagnosisRecord& d) {
+  const auto& v = d.verdict;
+  if (v.effect == "none") {
+    if (d.effects.empty()) return "No effect was tested, so the gap stays unexplained.";
     return fmt::format(
         "No tested effect is decisively supported: the best, {}, reaches {} dB against no effect (the rule asks for 20 dB), "
         "so the gap of {} is left unexplained.",
-        effects[0].value("effect", std::string("?")), number(effects[0].value("log_bayes_factor_deciban", 0.0), 3),
-        number(d["gap"].value("total", 0.0), 3));
+        d.effects[0].effect, number(d.effects[0].log_bayes_factor_deciban, 3), number(d.gap.total, 3));
   }
-  const bool white = v.value("residual_white_after", false);
   return fmt::format(
       "The gap is best explained by {} (Bayes factor {} dB against no effect{}): adding it shrinks the gap {}× "
       "({} % of the squared gap), most in the {}{}.",
-      effect, number(v.value("log_bayes_factor_deciban", 0.0), 4),
-      v.value("margin_deciban", Json()).is_number() ? fmt::format(", {} dB ahead of the next", number(v["margin_deciban"].get<double>(), 3))
-                                                    : std::string(),
-      fmt::format("{:.2f}", v.value("shrink", 1.0)), fmt::format("{:.0f}", 100.0 * v.value("explained_fraction", 0.0)),
-      band_text(v.value("band", Json::object())), white ? "; the residual left is white" : "; structure is left in the residual");
+      v.effect, number(v.log_bayes_factor_deciban, 4),
+      v.margin_deciban ? fmt::format(", {} dB ahead of the next", number(*v.margin_deciban, 3)) : std::string(),
+      fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction), band_text(v.band),
+      v.residual_white_after ? "; the residual left is white" : "; structure is left in the residual");
 }
 
-std::vector<plot::Figure> diagnosis_figures(const Json& d) {
+std::vector<plot::Figure> diagnosis_figures(const DiagnosisRecord& d) {
   std::vector<plot::Figure> out{gap_figure(d)};
-  const Json stages = d.value("stages", Json::array());
-  if (!stages.empty()) out.push_back(stage_figure(stages));
+  if (!d.stages.empty()) out.push_back(stage_figure(d.stages));
   return out;
 }
 
-std::string diagnosis_report_html(const Json& d) {
-  if (!d.contains("gap") || !d["gap"].contains("bands") || d["gap"]["bands"].empty() || !d.contains("verdict"))
-    throw InputError("diagnosis report: no gap bands or verdict (is it an admitgen.diagnosis/1 file?)");
+std::string diagnosis_report_html(const DiagnosisRecord& d) {
+  if (d.gap.bands.empty()) throw InputError("diagnosis report: no gap bands (is it an admitgen.diagnosis/1 file?)");
   const auto figures = diagnosis_figures(d);
-  const Json in = d.value("input", Json::object());
-  const std::string real = std::filesystem::path(text_of(in.value("real", Json::object()), "path")).filename().string();
-  const Json effects = d.value("effects", Json::array());
+  const std::string real = std::filesystem::path(d.input.real_path).filename().string();
   std::string body = fmt::format("<h1>Diagnosis of <code>{}</code></h1>\n", escape_xml(real));
-  body += fmt::format("<p class=\"muted\">Measured against {}.</p>\n", escape_xml(text_of(in, "sim")));
+  body += fmt::format("<p class=\"muted\">Measured against {}.</p>\n", escape_xml(d.input.sim));
   body += "<p class=\"verdict\"><strong>Verdict.</strong> " + escape_xml(verdict_sentence(d)) + "</p>\n";
-  body += warnings_box(in.value("warnings", std::vector<std::string>{}));
+  body += warnings_box(d.input.warnings);
   body += "<h2>Gap per one-third-octave band</h2>\n" +
           figure(figures[0].svg(),
-                 effects.empty() ? std::string("Gap between measured and simulated admittance in each band.")
-                                 : fmt::format("Gap between measured and simulated admittance in each band, without an "
-                                               "effect and with the best-supported one (<code>{}</code>) added at its "
-                                               "posterior mean.",
-                                               escape_xml(effects[0].value("effect", std::string("?"))))) +
-          gap_summary(d["gap"]);
-  const Json stages = d.value("stages", Json::array());
+                 d.effects.empty() ? std::string("Gap between measured and simulated admittance in each band.")
+                                   : fmt::format("Gap between measured and simulated admittance in each band, without an "
+                                                 "effect and with the best-supported one (<code>{}</code>) added at its "
+                                                 "posterior mean.",
+                                                 escape_xml(d.effects[0].effect))) +
+          gap_summary(d.gap);
   body += "<h2>Pipeline stages</h2>\n";
-  if (stages.empty())
+  if (d.stages.empty())
     body += "<p class=\"muted\">No stage attribution: run <code>admitgen diagnose --fit FIT.json --fs HZ</code> to see how "
             "much the fit, discretization, quantization and simulation each add.</p>\n";
   else
     body += figure(figures[1].svg(), "Gap that each stage of fit → filter → fixed point → simulation adds on its own, and "
                                      "the cumulative gap after it.") +
-            stage_table(stages);
+            stage_table(d.stages);
   body += "<h2>Effects</h2>\n" + effect_table(d);
   body += "<h2>Input and settings</h2>\n" + provenance(d);
   return page("admitgen diagnosis: " + real, body);
 }
 
-std::string write_diagnosis_report(const std::string& dir, const Json& d) {
+std::string write_diagnosis_report(const std::string& dir, const DiagnosisRecord& d) {
   const std::string path = (std::filesystem::path(dir) / "diagnosis.html").string();
   write_file_atomically(path, diagnosis_report_html(d));
   return path;
-}
-
-std::string write_diagnosis_report_from_file(const std::string& diagnosis_json_path) {
-  std::ifstream in(diagnosis_json_path, std::ios::binary);
-  if (!in) throw FileError(diagnosis_json_path, 0, "cannot read the diagnosis");
-  Json d;
-  try {
-    d = Json::parse(in);
-  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number overflow
-    throw FileError(diagnosis_json_path, 0, fmt::format("not JSON ({})", e.what()));
-  }
-  const auto dir = std::filesystem::path(diagnosis_json_path).parent_path();
-  return write_diagnosis_report(dir.empty() ? "." : dir.string(), d);
 }
 
 }  // namespace admitgen::report

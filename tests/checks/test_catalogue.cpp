@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The catalogue of deliberately broken filters (each flagged with the right named failure) and good
 // filters that pass every check (checks/check_suite.hpp).
+#include "io/fit_file.hpp"
 #include "checks/check_suite.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
@@ -21,10 +22,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-nlohmann::json reference_fit() {
-  std::ifstream in(test::sample("fits/q1s1_reference.json"));
-  return nlohmann::json::parse(in);
-}
+FitRecord reference_fit() { return io::read_fit_file(test::sample("fits/q1s1_reference.json")); }
 
 Emission emission(Format format, std::vector<double> fs, int taps = 0, Estimate estimate = Estimate::mean) {
   EmitSettings s;
@@ -52,15 +50,15 @@ std::vector<std::string> failed(const std::string& header) {
   return run_checks(checks::subject_from_header(header, "wall.h")).failed_checks();
 }
 
-std::vector<std::string> failed_fit(const nlohmann::json& fit) {
+std::vector<std::string> failed_fit(const FitRecord& fit) {
   return run_checks(checks::subject_from_fit(fit, "fit.json", "", Estimate::mean)).failed_checks();
 }
 
 bool has(const std::vector<std::string>& v, const std::string& name) { return std::find(v.begin(), v.end(), name) != v.end(); }
 
-void set_fit_mean(nlohmann::json& fit, const std::string& name, double value) {
-  for (auto& p : fit["parameters"])
-    if (p["name"] == name) p["mean"] = value;
+void set_fit_mean(FitRecord& fit, const std::string& name, double value) {
+  for (auto& p : fit.parameters)
+    if (p.name == name) p.mean = value;
 }
 
 }  // namespace

@@ -30,8 +30,8 @@ void set_parameter(nlohmann::json& fit, const std::string& name, double value, c
   REQUIRE(found);
 }
 
-/// Gives the selected order a passive estimate (the posterior means, as physics/multipole_surface.hpp reads
-/// it: models[].passive_estimate.parameters {name: value}) with `name` set to `value`.
+/// Gives the selected order a passive estimate (the posterior means, in models[].passive_estimate.parameters
+/// {name: value}; the other members as io/fit_file.hpp requires them) with `name` set to `value`.
 void set_passive(nlohmann::json& fit, const std::string& name, double value) {
   nlohmann::json parameters = nlohmann::json::object();
   for (const auto& p : fit["parameters"]) parameters[p["name"].get<std::string>()] = p["mean"];
@@ -39,7 +39,17 @@ void set_passive(nlohmann::json& fit, const std::string& name, double value) {
   parameters[name] = value;
   for (auto& m : fit["models"])
     if (m["order"] == fit["selected"]["order"]) {
-      m["passive_estimate"] = {{"parameters", parameters}};
+      m["passive_estimate"] = {{"poles_from", "test"},
+                               {"sample_rank", 0},
+                               {"residues", "test"},
+                               {"parameters", parameters},
+                               {"log_likelihood", 0.0},
+                               {"relative_rms_residual", 0.0},
+                               {"delta_log_likelihood_vs_best_sample", 0.0},
+                               {"best_sample_relative_rms_residual", 0.0},
+                               {"certified_passive", false},
+                               {"min_re_G", 0.0},
+                               {"constraint_rounds", 0}};
       return;
     }
   FAIL("no selected model");

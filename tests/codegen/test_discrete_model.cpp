@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Discretisation (codegen/discrete_model.hpp): PLRC baseline against docs/physics.md §1.3, the refit, folding,
 // the realisation's internal consistency.
+#include "io/fit_file.hpp"
 #include "codegen/discrete_model.hpp"
 #include "core/errors.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
@@ -21,9 +22,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 // The reference Q1S1 fit committed for the runtime tests and samples.
 MultipoleSurface reference_fit(std::vector<double>& f) {
-  std::ifstream in(test::sample("fits/q1s1_reference.json"));
-  const auto j = nlohmann::json::parse(in);
-  for (const auto& v : j["predictive"]["f_hz"]) f.push_back(v.get<double>());
+  const auto j = io::read_fit_file(test::sample("fits/q1s1_reference.json"));
+  f = j.predictive.value().f_hz;
   return multipole_from_fit(j, "", Estimate::mean, "fit");
 }
 

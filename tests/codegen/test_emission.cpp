@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Header generation (codegen/emission.hpp, template_text.hpp, band_absorption.hpp) and `admitgen emit`.
+#include "io/fit_file.hpp"
 #include "codegen/band_absorption.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
@@ -7,6 +8,7 @@
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -16,10 +18,7 @@ using namespace admitgen::codegen;
 
 namespace {
 
-nlohmann::json reference_json() {
-  std::ifstream in(test::sample("fits/q1s1_reference.json"));
-  return nlohmann::json::parse(in);
-}
+FitRecord reference_json() { return io::read_fit_file(test::sample("fits/q1s1_reference.json")); }
 
 }  // namespace
 

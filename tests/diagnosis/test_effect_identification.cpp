@@ -6,7 +6,8 @@
 //  * early stop: every candidate that stopped early, re-run to the end, has a best likelihood below the
 //    bound that stopped it and an evidence more than the early-stop margin below the leader, and the
 //    verdict, its evidence and the ranking of the candidates that ran to the end are unchanged.
-#include "diagnosis/diagnosis_json.hpp"
+#include "diagnosis/diagnosis_record.hpp"
+#include "io/diagnosis_file.hpp"
 #include "diagnosis/effect_identification.hpp"
 #include "inference/evidence.hpp"
 #include "validation_cases.hpp"
@@ -59,9 +60,9 @@ TEST_CASE("diagnose: quadrature evidence of 1-parameter effects agrees with nest
 TEST_CASE("diagnose: diagnosis.json is byte-identical with 1 and 2 threads") {
   auto request = case_request(clear_case("frame_resonance", "frame_resonance:f0_hz=600,q=8,y_peak=0.1", 3), 40);
   request.settings.threads = 1;
-  const std::string one = diagnosis::diagnosis_text(diagnosis::run_diagnosis(request));
+  const std::string one = io::diagnosis_text(diagnosis::diagnosis_record(diagnosis::run_diagnosis(request)));
   request.settings.threads = 2;
-  const std::string two = diagnosis::diagnosis_text(diagnosis::run_diagnosis(request));
+  const std::string two = io::diagnosis_text(diagnosis::diagnosis_record(diagnosis::run_diagnosis(request)));
   CHECK(one == two);
 }
 

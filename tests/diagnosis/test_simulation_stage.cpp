@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The simulation stage (docs/diagnosis.md): a 1D FDTD impedance tube terminated by the C runtime, measured with
 // two virtual microphones and the ISO 10534-2 processing (simulation/impedance_tube_fdtd.hpp).
+#include "io/fit_file.hpp"
 #include "codegen/coefficients.hpp"
 #include "codegen/emission.hpp"
 #include "diagnosis/stage_attribution.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "physics/noise.hpp"
 #include "physics/synthetic_measurement.hpp"
 #include "physics/two_microphone.hpp"
@@ -114,8 +115,7 @@ TEST_CASE("FDTD tube: the q15 runtime measures its own response to within its ro
 }
 
 TEST_CASE("simulation stage: a good setup (reference fit, q31, 48 kHz) is negligible next to the fit") {
-  std::ifstream in(sample("fits/q1s1_reference.json"));
-  const auto fit = nlohmann::json::parse(in);
+  const auto fit = io::read_fit_file(sample("fits/q1s1_reference.json"));
   const Eigen::ArrayXd f = log_spaced_frequencies(100.0, 4000.0, 200);
   const auto surface = multipole_from_fit(fit, "", Estimate::mean, "test");
   Rng rng(7);

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Stage attribution (docs/diagnosis.md): a deliberately coarse setup is blamed on the right stage,
 // and a good setup shows every downstream stage negligible next to the fit.
+#include "io/fit_file.hpp"
 #include "core/errors.hpp"
 #include "diagnosis/stage_attribution.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "physics/noise.hpp"
 #include "physics/synthetic_measurement.hpp"
 #include "test_support.hpp"
@@ -16,27 +17,24 @@
 namespace admitgen::test {
 namespace {
 
-nlohmann::json reference_fit() {
-  std::ifstream in(sample("fits/q1s1_reference.json"));
-  return nlohmann::json::parse(in);
-}
+FitRecord reference_fit() { return io::read_fit_file(sample("fits/q1s1_reference.json")); }
 
 /// The reference fit with its real pole moved to 2 Hz (λ = 12.566 1/s, A = 100 1/s) and the data band
 /// narrowed to 100-2000 Hz: the slow pole is the hard case of fixed point (docs/physics.md §3.2).
-nlohmann::json slow_pole_fit() {
-  nlohmann::json fit = reference_fit();
-  for (auto& p : fit["parameters"]) {
-    if (p["name"] == "lambda_1") p["mean"] = 12.566;
-    if (p["name"] == "A_1") p["mean"] = 100.0;
+FitRecord slow_pole_fit() {
+  FitRecord fit = reference_fit();
+  for (auto& p : fit.parameters) {
+    if (p.name == "lambda_1") p.mean = 12.566;
+    if (p.name == "A_1") p.mean = 100.0;
   }
-  fit.erase("predictive");
-  fit["input"]["f_min_hz"] = 100.0;
-  fit["input"]["f_max_hz"] = 2000.0;
+  fit.predictive.reset();
+  fit.input.f_min_hz = 100.0;
+  fit.input.f_max_hz = 2000.0;
   return fit;
 }
 
 /// "Measured" data: the fit's own model plus noise of std σ, so the fit stage is the noise alone.
-Eigen::ArrayXcd own_model_data(const nlohmann::json& fit, const Eigen::ArrayXd& f, double sigma) {
+Eigen::ArrayXcd own_model_data(const FitRecord& fit, const Eigen::ArrayXd& f, double sigma) {
   const auto surface = multipole_from_fit(fit, "", Estimate::mean, "test");
   Rng rng(7);
   return surface_admittance(surface, f) + complex_gaussian_noise(Eigen::ArrayXd::Constant(f.size(), sigma), rng);

@@ -2,7 +2,7 @@
 // The prior transform: ranges, ordering in the reduced space, and the order-statistics density.
 #include "core/errors.hpp"
 #include "core/rng.hpp"
-#include "inference/priors.hpp"
+#include "io/priors_file.hpp"
 #include "model/multipole.hpp"
 #include "test_support.hpp"
 
@@ -49,7 +49,7 @@ TEST_CASE("prior transform: folding gives the canonical copy with the same likel
 TEST_CASE("prior file: overrides, validation and symmetric-range requirement") {
   const std::string dir = test::scratch_dir("priors");
   test::write_text(dir + "/ok.json", R"({"lambda": [0, 200000], "G_inf": [-2, 2]})");
-  const PriorRanges pr = PriorRanges::from_file(dir + "/ok.json");
+  const PriorRanges pr = io::read_priors_file(dir + "/ok.json");
   CHECK(pr.lambda.hi == 200000.0);
   CHECK(pr.g_inf.lo == -2.0);
   CHECK(pr.a.hi == 40000.0);  // untouched families keep Table 1
@@ -58,7 +58,7 @@ TEST_CASE("prior file: overrides, validation and symmetric-range requirement") {
   test::write_text(dir + "/acausal.json", R"({"alpha": [-5, 100]})");
   test::write_text(dir + "/not_json.json", "lambda = 3");
   for (const char* f : {"bad_key.json", "bad_range.json", "acausal.json", "not_json.json", "missing.json"})
-    CHECK_THROWS_AS(PriorRanges::from_file(dir + "/" + f), InputError);
+    CHECK_THROWS_AS(io::read_priors_file(dir + "/" + f), InputError);
   PriorRanges asym;
   asym.beta = {0.0, 15000.0};
   CHECK_THROWS_AS(PriorTransform(Order(0, 1), asym, true), InputError);

@@ -6,16 +6,17 @@
 #include "data/csv_reader.hpp"
 #include "emit/emit.hpp"
 #include "model/multipole.hpp"
+#include "io/fit_file.hpp"
 #include "model/passivity.hpp"
-#include "output/fit_reader.hpp"
 #include "passivity/passive_estimate.hpp"
 #include "passivity/passive_residues.hpp"
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace admitgen;
@@ -24,7 +25,7 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
 
-Eigen::VectorXd theta_of(const nlohmann::json& fit, const std::string& order, Estimate e) {
+Eigen::VectorXd theta_of(const FitRecord& fit, const std::string& order, Estimate e) {
   return multipole_from_fit(fit, order, e, "fit").theta;
 }
 
@@ -50,13 +51,14 @@ TEST_CASE("passive residues: a model negative only far below the data band is re
   CHECK(continuous_passivity(order, source.surface.theta.data()).passive);
   REQUIRE(source.notes.size() == 1);
   CHECK(source.notes[0].find("passivity enforced") != std::string::npos);
-  CHECK(source.enforcement.at("certified").get<bool>());
+  REQUIRE(source.enforcement);
+  CHECK(source.enforcement->certified);
   // The reported in-band change is what the two models say at the data frequencies.
   Eigen::ArrayXd w(100);
   for (int i = 0; i < 100; ++i) w[i] = kTwoPi * source.data_f_hz[static_cast<std::size_t>(i)];
   const Eigen::ArrayXcd g0 = evaluate_multipole(order, th, w), g1 = evaluate_multipole(order, source.surface.theta, w);
   const double change = ((g1 - g0).abs() / g0.abs()).maxCoeff();
-  CHECK(source.enforcement.at("max_rel_change_in_data_band").get<double>() == doctest::Approx(change).epsilon(1e-12));
+  CHECK(source.enforcement->max_rel_change_in_data_band == doctest::Approx(change).epsilon(1e-12));
   // Minimal: the least-squares objective (relative RMS change at the data frequencies) is below that of the
   // two obvious repairs, raising G∞ to 1.6 G∞ or shrinking A to −λ G∞ (both make Re G(0) = 0).
   const auto rms_change = [&](const Eigen::VectorXd& other) {
@@ -73,11 +75,11 @@ TEST_CASE("passive residues: a model negative only far below the data band is re
   CHECK(rms_change(source.surface.theta) <= rms_change(shrink) * (1.0 + 1e-6));
   MESSAGE("relative change: max " << change << " (rms " << rms_change(source.surface.theta) << "; raising G_inf "
                                   << rms_change(raise) << ", shrinking A " << rms_change(shrink) << "), outside the band "
-                                  << source.enforcement.at("max_rel_change_outside_data_band"));
+                                  << source.enforcement->max_rel_change_outside_data_band);
 }
 
 TEST_CASE("passive residues: already-passive target is reproduced (constraints inactive)") {
-  const auto fit = read_fit_file(test::sample("fits/q1s1_reference.json"));
+  const auto fit = io::read_fit_file(test::sample("fits/q1s1_reference.json"));
   const Order order(1, 1);
   const Eigen::VectorXd th = theta_of(fit, "Q1S1", Estimate::mean);
   REQUIRE(continuous_passivity(order, th.data()).passive);
@@ -94,7 +96,7 @@ TEST_CASE("passive residues: already-passive target is reproduced (constraints i
 TEST_CASE("passive estimate: on passive-truth data its residual is within 5 % of the best sample's") {
   // The three-layer MPP (a passive truth, noise 0.01) has orders whose best samples are not passive; the
   // committed fit holds their best samples (max_likelihood), so no sampling is needed here.
-  const auto fit = read_fit_file(test::sample("synthetic/mpp_three_layer_fit/fit.json"));
+  const auto fit = io::read_fit_file(test::sample("synthetic/mpp_three_layer_fit/fit.json"));
   const auto data = read_measurement(test::sample("synthetic/mpp_three_layer.csv"), ReadOptions{});
   // Orders that describe these data (best-sample residual below 5 %; the others are the wrong order and
   // not what a user emits).
@@ -160,8 +162,10 @@ TEST_CASE("near-rigid data, Re y < 0 at many points: fit warns, emit writes a ce
                                       dir + "/fit");
   REQUIRE(fit.exit_code == 0);
   CHECK(fit.output.find(fmt::format("the data are not passive at {} of 120 points", negative)) != std::string::npos);
-  const auto j = read_fit_file(dir + "/fit/fit.json");
-  CHECK(j["warnings"].dump().find("not passive at") != std::string::npos);
+  const auto j = io::read_fit_file(dir + "/fit/fit.json");
+  REQUIRE(j.warnings);
+  CHECK(std::any_of(j.warnings->begin(), j.warnings->end(),
+                    [](const std::string& w) { return w.find("not passive at") != std::string::npos; }));
   for (const char* format : {"f32", "q31", "q15"}) {
     const auto emit = test::run_admitgen(fmt::format("emit {}/fit/fit.json --fs 48000 --format {} --out {}/wall_{}.h",
                                                      dir, format, dir, format));

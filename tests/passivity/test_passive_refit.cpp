@@ -5,8 +5,8 @@
 #include "codegen/discrete_model.hpp"
 #include "codegen/template_text.hpp"
 #include "emit/emit.hpp"
-#include "output/fit_reader.hpp"
-#include "physics/multipole_surface.hpp"
+#include "io/fit_file.hpp"
+#include "model/multipole_surface.hpp"
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
@@ -33,10 +33,10 @@ TEST_CASE("passive refit: refits that go negative near Nyquist are constrained a
   int repaired = 0, cases = 0;
   for (const char* file : {"fits/q1s1_reference.json", "synthetic/glass_beads_40mm_fit/fit.json",
                            "synthetic/mpp_three_layer_fit/fit.json", "fits/basotect_round_10cm_passive/fit.json"}) {
-    const auto fit = read_fit_file(test::sample(file));
+    const auto fit = io::read_fit_file(test::sample(file));
     const auto surface = multipole_from_fit(fit, "", Estimate::mean, file);
     if (!continuous_passivity(surface.order, surface.theta.data()).passive) continue;
-    const auto f = log_grid(fit["input"]["f_min_hz"].get<double>(), fit["input"]["f_max_hz"].get<double>(), 200);
+    const auto f = log_grid(fit.input.f_min_hz, fit.input.f_max_hz, 200);
     for (double fs : {16000.0, 24000.0, 44100.0, 48000.0}) {
       if (f.back() >= 0.45 * fs) continue;
       for (double fold : {4.0, 0.5, 0.25}) {
@@ -70,7 +70,7 @@ TEST_CASE("passive refit: refits that go negative near Nyquist are constrained a
 }
 
 TEST_CASE("emit pipeline: every format and rate of the reference fit passes admitgen check") {
-  const auto fit = read_fit_file(test::sample("fits/q1s1_reference.json"));
+  const auto fit = io::read_fit_file(test::sample("fits/q1s1_reference.json"));
   const std::string tpl = codegen::load_template("", "admitgen_boundary.h.in");
   for (auto format : {codegen::Format::f32, codegen::Format::q31, codegen::Format::q15}) {
     codegen::EmitSettings s;

@@ -1,20 +1,25 @@
 // SPDX-License-Identifier: MIT
 // The material SPEC grammar (physics/material_spec.hpp): what parses to what, and what is rejected.
 #include "core/errors.hpp"
+#include "io/fit_file.hpp"
 #include "model/multipole.hpp"
 #include "physics/material_spec.hpp"
 #include "physics_test_support.hpp"
 #include "test_support.hpp"
 
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <string>
 
 namespace admitgen {
 namespace {
 
+/// The SPEC parsed as the command line parses it (fit(...) read by io/fit_file.hpp).
+Material material_spec(const std::string& spec) { return parse_material_spec(spec, io::read_fit_file); }
+
 TEST_CASE("material SPEC: layers, units and order front to back") {
-  const Material m = parse_material_spec(
+  const Material m = material_spec(
       "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=5cm) + air(d=20mm)");
   const auto& layers = std::get<LayeredAbsorber>(m).layers;
   REQUIRE(layers.size() == 2);
@@ -26,7 +31,7 @@ TEST_CASE("material SPEC: layers, units and order front to back") {
   CHECK(std::get<AirLayer>(layers[1]).thickness == doctest::Approx(0.02).epsilon(1e-15));
   CHECK(std::get<LayeredAbsorber>(m).depth() == doctest::Approx(0.07).epsilon(1e-15));
 
-  const Material mpp = parse_material_spec("mpp(hole=0.4mm,t=0.4mm,p=1%)+air(d=0.05)");
+  const Material mpp = material_spec("mpp(hole=0.4mm,t=0.4mm,p=1%)+air(d=0.05)");
   const auto& panel = std::get<MicroPerforatedPanel>(std::get<LayeredAbsorber>(mpp).layers[0]);
   CHECK(panel.perforation == doctest::Approx(0.01).epsilon(1e-15));
   CHECK(panel.hole_diameter == doctest::Approx(0.4e-3).epsilon(1e-15));
@@ -34,13 +39,13 @@ TEST_CASE("material SPEC: layers, units and order front to back") {
   // The same absorber written two ways gives the same admittance, bit for bit.
   const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(5, 100.0, 2000.0);
   const Air air = Air::at_celsius(20.0);
-  CHECK((surface_admittance(parse_material_spec("miki(sigma=10000,d=50mm)"), air, f) ==
-         surface_admittance(parse_material_spec("  miki( d = 0.05 , sigma = 1e4 )  "), air, f))
+  CHECK((surface_admittance(material_spec("miki(sigma=10000,d=50mm)"), air, f) ==
+         surface_admittance(material_spec("  miki( d = 0.05 , sigma = 1e4 )  "), air, f))
             .all());
 }
 
 TEST_CASE("material SPEC: multipole by parameters evaluates model/multipole with the contract packing") {
-  const Material m = parse_material_spec(
+  const Material m = material_spec(
       "multipole(G_inf=0.469, A_1=-26062, lambda_1=55250, B_1=2019, C_1=-263, alpha_1=1530, beta_1=10063)");
   const auto& surface = std::get<MultipoleSurface>(m);
   CHECK(surface.order == Order(1, 1));
@@ -54,7 +59,7 @@ TEST_CASE("material SPEC: multipole by parameters evaluates model/multipole with
 
 TEST_CASE("material SPEC: fit(file=...) takes the selected order's posterior mean from a fit.json") {
   const std::string path = test::sample("synthetic/glass_beads_40mm_fit/fit.json");
-  const Material material = parse_material_spec("fit(file=" + path + ")");
+  const Material material = material_spec("fit(file=" + path + ")");
   const auto& surface = std::get<MultipoleSurface>(material);
   const nlohmann::json doc = nlohmann::json::parse(test::read_text(path));
   CHECK(surface.order == Order::parse(doc["selected"]["order"].get<std::string>()));
@@ -63,12 +68,12 @@ TEST_CASE("material SPEC: fit(file=...) takes the selected order's posterior mea
     CHECK(doc["parameters"][i]["name"] == names[i]);
     CHECK(surface.theta[static_cast<Eigen::Index>(i)] == doc["parameters"][i]["mean"].get<double>());
   }
-  const Material q0s2 = parse_material_spec("fit(file=" + path + ", order=Q0S2, estimate=max_likelihood)");
+  const Material q0s2 = material_spec("fit(file=" + path + ", order=Q0S2, estimate=max_likelihood)");
   CHECK(std::get<MultipoleSurface>(q0s2).order == Order(0, 2));
 }
 
 TEST_CASE("material SPEC: errors name the problem") {
-  test::check_input_errors([](const std::string& spec) { return parse_material_spec(spec); }, {
+  test::check_input_errors([](const std::string& spec) { return material_spec(spec); }, {
       {"mikki(sigma=1,d=1)", "unknown layer 'mikki'"},
       {"miki(sigma=10000)", "missing parameter 'd'"},
       {"miki(sigma=10000,d=5cm,phi=0.9)", "unknown parameter 'phi'"},

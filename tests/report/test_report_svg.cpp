@@ -2,6 +2,8 @@
 // The plotting module and the HTML reports: every generated SVG parses as XML (libxml2), each figure
 // holds the series it should (data, model, band; before/after; stages) with finite coordinates, the
 // pages are well-formed, self-contained and deterministic, and the CLI writes them.
+#include "io/diagnosis_file.hpp"
+#include "io/fit_file.hpp"
 #include "core/errors.hpp"
 #include "data/csv_reader.hpp"
 #include "plot/figure.hpp"
@@ -28,7 +30,6 @@
 
 using namespace admitgen;
 using namespace admitgen::test;
-using Json = nlohmann::ordered_json;
 
 namespace {
 
@@ -124,14 +125,8 @@ std::vector<std::string> svgs_in(const std::string& html) {
   return out;
 }
 
-Json read_json(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  REQUIRE(in);
-  return Json::parse(in);
-}
-
 struct FitSample {
-  Json fit = read_json(sample("fits/q1s1_reference.json"));
+  FitRecord fit = io::read_fit_file(sample("fits/q1s1_reference.json"));
   Measurement data = read_measurement(sample("reference/q1s1_sigma0.01.csv"), ReadOptions{});
 };
 
@@ -238,7 +233,7 @@ TEST_CASE("report: every figure of the fit report is XML with data, model and ba
     CHECK(c.series.at("band").classes.find("kind-band") != std::string::npos);
   }
   const SvgContent evidence = svg_content(figures[3].svg());
-  CHECK(evidence.series.at("models").primitives == 2 * (s.fit["models"].size() - 1));  // whisker + marker
+  CHECK(evidence.series.at("models").primitives == 2 * (s.fit.models.size() - 1));  // whisker + marker
   CHECK(evidence.series.at("selected").primitives == 2);
 }
 
@@ -248,22 +243,22 @@ TEST_CASE("report: report.html is one well-formed, self-contained, deterministic
   check_self_contained_page(html);
   CHECK(html == report::fit_report_html(s.fit, s.data));
   CHECK(svgs_in(html).size() == 4);
-  for (const auto& m : s.fit["models"]) CHECK(html.find(m["order"].get<std::string>()) != std::string::npos);
-  const std::string sha = s.fit["input"]["sha256"].get<std::string>();
+  for (const auto& m : s.fit.models) CHECK(html.find(m.order) != std::string::npos);
+  const std::string sha = s.fit.input.sha256;
   for (const std::string text : {"G<sub>∞</sub>", "λ<sub>1</sub>", "β<sub>1</sub>", "Bayes factor", "stopped by",
                                  "q1s1_sigma0.01.csv", sha.c_str(), "best evidence"})
     CHECK_MESSAGE(html.find(text) != std::string::npos, text);
-  // Not an admitgen.fit/1 document: a message, not a crash.
-  CHECK_THROWS_AS(report::fit_report_html(Json::object(), s.data), InputError);
+  // A fit without models: a message, not a crash.
+  CHECK_THROWS_AS(report::fit_report_html(FitRecord{}, s.data), InputError);
 }
 
 TEST_CASE("report: diagnosis figures show the gap per band before and after the best effect") {
-  const Json d = read_json(sample("diagnosis/round_vs_rect_5cm/diagnosis.json"));
+  const auto d = io::read_diagnosis_file(sample("diagnosis/round_vs_rect_5cm/diagnosis.json"));
   const auto figures = report::diagnosis_figures(d);
   REQUIRE(figures.size() == 1);  // the sample has no stages
   const SvgContent c = svg_content(figures[0].svg());
-  CHECK(c.series.at("before").primitives == d["gap"]["bands"].size());
-  CHECK(c.series.at("after").primitives == d["effects"][0]["bands_after"].size());
+  CHECK(c.series.at("before").primitives == d.gap.bands.size());
+  CHECK(c.series.at("after").primitives == d.effects[0].bands_after.size());
   const std::string html = report::diagnosis_report_html(d);
   check_self_contained_page(html);
   CHECK(html == report::diagnosis_report_html(d));
@@ -271,21 +266,19 @@ TEST_CASE("report: diagnosis figures show the gap per band before and after the 
   CHECK(verdict.find("edge_gap") != std::string::npos);
   CHECK(verdict.find("1.30×") != std::string::npos);
   CHECK(verdict.find("630 Hz band (562–708 Hz)") != std::string::npos);
-  for (const auto& e : d["effects"]) CHECK(html.find(e["effect"].get<std::string>()) != std::string::npos);
+  for (const auto& e : d.effects) CHECK(html.find(e.effect) != std::string::npos);
   CHECK(html.find("--fit FIT.json --fs HZ") != std::string::npos);  // tells how to get the stages
 }
 
 TEST_CASE("report: stage contributions and a 'none' verdict") {
-  Json d = read_json(sample("diagnosis/round_vs_rect_5cm/diagnosis.json"));
-  d["stages"] = Json::array();
+  auto d = io::read_diagnosis_file(sample("diagnosis/round_vs_rect_5cm/diagnosis.json"));
+  d.stages.clear();
   double cumulative = 0.0;
   for (const char* stage : {"fit", "discretization", "quantization", "simulation"}) {
     cumulative += 0.01;
-    d["stages"].push_back({{"stage", stage}, {"gap", 0.01}, {"bands", d["gap"]["bands"]},
-                           {"worst_band", d["gap"]["worst_band"]},
-                           {"cumulative", {{"gap", cumulative}, {"bands", d["gap"]["bands"]}}}});
+    d.stages.push_back({stage, 0.01, d.gap.bands, d.gap.worst_band, cumulative, d.gap.bands, std::nullopt});
   }
-  d["verdict"]["effect"] = "none";
+  d.verdict.effect = "none";
   const auto figures = report::diagnosis_figures(d);
   REQUIRE(figures.size() == 2);
   const SvgContent c = svg_content(figures[1].svg());

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "physics/multipole_surface.hpp"
+#include "model/multipole_surface.hpp"
 
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
@@ -19,18 +19,10 @@ int count_indexed(const std::map<std::string, double>& values, const std::string
   return n;
 }
 
-const nlohmann::json& member(const nlohmann::json& j, const char* key, const std::string& origin) {
-  if (!j.is_object() || !j.contains(key)) throw InputError(fmt::format("{}: no '{}' member", origin, key));
-  return j.at(key);
-}
-
-/// The "models" entry of `order` (empty: the selected order).
-const nlohmann::json& model_entry(const nlohmann::json& fit, const std::string& order, const std::string& origin) {
-  const std::string wanted =
-      order.empty() ? member(member(fit, "selected", origin), "order", origin).get<std::string>() : order;
-  for (const auto& m : member(fit, "models", origin))
-    if (Order::parse(member(m, "order", origin).get<std::string>()) == Order::parse(wanted)) return m;
-  throw InputError(fmt::format("{}: order {} was not fitted", origin, wanted));
+/// The model of `order` (empty: the selected one); throws InputError if it was not fitted.
+const FitModel& model_entry(const FitRecord& fit, const std::string& order, const std::string& origin) {
+  if (const FitModel* m = fit.model(order)) return *m;
+  throw InputError(fmt::format("{}: order {} was not fitted", origin, order.empty() ? fit.selected_order : order));
 }
 
 }  // namespace
@@ -51,12 +43,8 @@ const char* estimate_name(Estimate estimate) {
   return "?";
 }
 
-bool fit_has_passive_estimate(const nlohmann::json& fit, const std::string& order, const std::string& origin) {
-  try {
-    return model_entry(fit, order, origin).contains("passive_estimate");
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a usable fit.json ({})", origin, e.what()));
-  }
+bool fit_has_passive_estimate(const FitRecord& fit, const std::string& order, const std::string& origin) {
+  return model_entry(fit, order, origin).passive_estimate.has_value();
 }
 
 std::vector<std::string> causality_violations(const MultipoleSurface& surface) {
@@ -100,39 +88,23 @@ MultipoleSurface multipole_from_parameters(const std::map<std::string, double>& 
   return surface;
 }
 
-MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string& order, Estimate estimate,
+MultipoleSurface multipole_from_fit(const FitRecord& fit, const std::string& order, Estimate estimate,
                                     const std::string& origin, Causality causality) {
-  try {
-    if (estimate == Estimate::passive) {
-      const auto& m = model_entry(fit, order, origin);
-      if (!m.contains("passive_estimate"))
-        throw InputError(fmt::format("{}: order {} has no passive estimate (written by an older admitgen): re-run "
-                                     "admitgen fit, or choose --estimate mean or max_likelihood",
-                                     origin, m.at("order").get<std::string>()));
-      std::map<std::string, double> values;
-      for (const auto& [name, v] : member(member(m, "passive_estimate", origin), "parameters", origin).items())
-        values[name] = v.get<double>();
-      return multipole_from_parameters(values, origin, causality);
-    }
-    const std::string selected = member(member(fit, "selected", origin), "order", origin).get<std::string>();
-    const nlohmann::json* parameters = &member(fit, "parameters", origin);
-    if (!order.empty() && Order::parse(order) != Order::parse(selected)) {
-      parameters = nullptr;
-      for (const auto& m : member(fit, "models", origin))
-        if (Order::parse(member(m, "order", origin).get<std::string>()) == Order::parse(order))
-          parameters = &member(m, "parameters", origin);
-      if (parameters == nullptr) throw InputError(fmt::format("{}: order {} was not fitted", origin, order));
-    }
-    const char* field = estimate == Estimate::mean ? "mean" : "max_likelihood";
-    std::map<std::string, double> values;
-    for (const auto& p : *parameters) {
-      const double v = member(p, field, origin).get<double>();
-      values[member(p, "name", origin).get<std::string>()] = v;
-    }
+  const FitModel& m = model_entry(fit, order, origin);
+  std::map<std::string, double> values;
+  if (estimate == Estimate::passive) {
+    if (!m.passive_estimate)
+      throw InputError(fmt::format("{}: order {} has no passive estimate (written by an older admitgen): re-run "
+                                   "admitgen fit, or choose --estimate mean or max_likelihood",
+                                   origin, m.order));
+    for (const auto& [name, v] : m.passive_estimate->parameters) values[name] = v;
     return multipole_from_parameters(values, origin, causality);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a usable fit.json ({})", origin, e.what()));
   }
+  // The selected order's summaries are the top-level "parameters" of the file (the same numbers).
+  const bool selected = order.empty() || Order::parse(order) == Order::parse(fit.selected_order);
+  for (const auto& p : selected ? fit.parameters : m.parameters)
+    values[p.name] = estimate == Estimate::mean ? p.mean : p.max_likelihood;
+  return multipole_from_parameters(values, origin, causality);
 }
 
 Eigen::ArrayXcd surface_admittance(const MultipoleSurface& surface, const Eigen::ArrayXd& f_hz) {

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// A surface given directly by a multipole admittance (docs/method.md, paper eq. 2), from explicit parameters or
-/// from a `fit.json` written by `admitgen fit`. Evaluated by model/multipole.hpp; the packing of θ is
-/// the one of model/order.hpp.
+/// The fitted continuous model: a surface given directly by a multipole admittance (docs/method.md, paper eq. 2),
+/// from explicit parameters or from a fit record (model/fit_record.hpp). Evaluated by
+/// model/multipole.hpp; the packing of θ is the one of model/order.hpp.
 #pragma once
 
+#include "model/fit_record.hpp"
 #include "model/order.hpp"
 
 #include <Eigen/Core>
-#include <nlohmann/json.hpp>
 
 #include <map>
 #include <string>
@@ -48,12 +48,13 @@ const char* estimate_name(Estimate estimate);
 
 /// True when the fit holds a passive estimate for `order` (empty: the selected one); fits written by
 /// older versions of admitgen do not.
-bool fit_has_passive_estimate(const nlohmann::json& fit, const std::string& order, const std::string& origin);
+/// Throws InputError naming `origin` if `order` was not fitted.
+bool fit_has_passive_estimate(const FitRecord& fit, const std::string& order, const std::string& origin);
 
-/// The multipole of a parsed fit.json (schema admitgen.fit/1): the selected order by default, or
-/// `order` (e.g. "Q0S2") from its "models" list. Throws InputError naming `origin` if the document
-/// lacks what is needed, or (when causality is required) naming the parameter that makes it non-causal.
-MultipoleSurface multipole_from_fit(const nlohmann::json& fit, const std::string& order, Estimate estimate,
+/// The multipole of a fit: the selected order by default, or `order` (e.g. "Q0S2") from its models.
+/// Throws InputError naming `origin` if the fit lacks that order or estimate, or (when causality is
+/// required) naming the parameter that makes it non-causal.
+MultipoleSurface multipole_from_fit(const FitRecord& fit, const std::string& order, Estimate estimate,
                                     const std::string& origin, Causality causality = Causality::required);
 
 /// y(f) = G(2πf) at f_hz.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "output/posterior_export.hpp"
+#include "io/posterior_export.hpp"
 
 #include "core/atomic_file.hpp"
 #include "core/rng.hpp"

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// The posterior companion files of fit.json (output/posterior_export.hpp, docs/posterior_files.md):
+// The posterior companion files of fit.json (io/posterior_export.hpp, docs/posterior_files.md):
 // covariance against an independent one-pass computation, equal-weight draws against the weighted
 // mean, and the files written by `admitgen fit`.
 #include "data/csv_reader.hpp"
 #include "inference/posterior.hpp"
-#include "output/posterior_export.hpp"
+#include "io/posterior_export.hpp"
 #include "selection/fit.hpp"
 #include "test_support.hpp"
 

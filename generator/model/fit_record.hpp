@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// What a fit file holds (docs/formats.md, "fit.json"), as plain data: the record `admitgen fit` writes
+/// and `emit`, `check`, `diagnose` and the fit report take. Written from a fit by selection/fit_record.hpp;
+/// read from and written to text only by io/fit_file.hpp, which owns the keys and the schema version.
+/// Members marked "absent in older fits" are std::optional: fits written by earlier versions of admitgen
+/// lack them, and the reader accepts that.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace admitgen {
+
+/// Schema identifier of the fit file.
+inline constexpr const char* kFitSchema = "admitgen.fit/1";
+
+/// Posterior summary of one parameter (contract name: G_inf, A_1, lambda_1, ...).
+struct FitParameter {
+  std::string name;
+  double mean = 0.0, std = 0.0, ci95_lo = 0.0, ci95_hi = 0.0, max_likelihood = 0.0;
+};
+
+/// The data the fit was made to and how the file was read.
+struct FitInput {
+  std::string path, sha256;
+  std::int64_t points = 0;
+  double f_min_hz = 0.0, f_max_hz = 0.0;
+  std::string columns;  ///< column spec, or "auto"
+  std::string quantity;
+  std::optional<std::string> read_as;  ///< absent in older fits
+  std::optional<double> rho_c;         ///< null: values were normalised
+  std::optional<std::array<double, 2>> band;  ///< null: the whole file
+};
+
+struct FitSamplerSettings {
+  std::string method;
+  double dlogz = 0.0;
+  std::int64_t max_iterations = 0;
+  std::optional<std::int64_t> missed_mode_retries;  ///< absent in older fits
+  std::optional<std::int64_t> slices;               ///< empty: automatic ("3 + dim")
+  std::optional<std::string> residues;              ///< absent in older fits
+  std::optional<double> truncation_tolerance_nats;  ///< absent in older fits
+};
+
+struct FitSettingsRecord {
+  std::int64_t live = 0;
+  std::uint64_t seed = 0;
+  std::string priors_source;
+  bool symmetry_reduced = false;
+  /// Prior range per family, in file order (G_inf, A, lambda, B, C, alpha, beta).
+  std::vector<std::pair<std::string, std::array<double, 2>>> prior_ranges;
+  std::string likelihood, select;
+  std::int64_t qmax = 0, smax = 0;
+  FitSamplerSettings sampler;
+  std::optional<std::string> passive;  ///< present when the prior was truncated to passive models
+};
+
+/// The passive estimate of one order (docs/passivity.md).
+struct FitPassiveEstimate {
+  std::string poles_from;
+  std::int64_t sample_rank = 0;
+  std::string residues;
+  std::vector<std::pair<std::string, double>> parameters;  ///< name → value, in θ order
+  double log_likelihood = 0.0, relative_rms_residual = 0.0, delta_log_likelihood_vs_best_sample = 0.0,
+         best_sample_relative_rms_residual = 0.0;
+  bool certified_passive = false;
+  double min_re_G = 0.0;
+  std::int64_t constraint_rounds = 0;
+};
+
+struct FitGoodness {
+  std::string estimate;
+  double relative_rms_residual = 0.0, max_abs_delta_alpha = 0.0;
+};
+
+/// The pole sampler's corrections (present when the order did not run the full sampler).
+struct FitTruncation {
+  double correction_nats = 0.0, correction_error_nats = 0.0, reweighted_ess_ratio = 0.0,
+         residue_draws_gibbs_weight = 0.0;
+};
+
+/// One fitted order.
+struct FitModel {
+  std::string order;
+  std::int64_t q = 0, s = 0;
+  std::optional<std::int64_t> live;  ///< absent in older fits (then: the settings' live)
+  double log_evidence = 0.0, log_evidence_error = 0.0, max_log_likelihood = 0.0, information_nats = 0.0;
+  std::int64_t likelihood_calls = 0, iterations = 0;
+  std::string stopped_by;
+  std::optional<double> seconds;  ///< run time; only in fits of earlier versions (now left out: equal runs, equal bytes)
+  std::vector<FitParameter> parameters;
+  std::optional<FitPassiveEstimate> passive_estimate;  ///< absent in older fits
+  std::optional<double> log_passive_prior_fraction;    ///< with --passive
+  std::optional<FitGoodness> goodness_of_fit;          ///< absent in older fits
+  std::optional<std::string> sampler;                  ///< absent in older fits
+  std::optional<std::string> sampler_note;
+  std::optional<FitTruncation> truncation;
+};
+
+/// Median and 95 % band of the selected order's posterior predictive.
+struct FitPredictive {
+  std::int64_t draws = 0;
+  std::vector<double> quantiles;  ///< 0.025, 0.5, 0.975
+  std::vector<double> f_hz;
+  /// One row per quantile, each as long as f_hz.
+  std::array<std::vector<double>, 3> re_G, im_G, alpha;
+};
+
+struct FitRecord {
+  std::string schema = kFitSchema;
+  std::string version;
+  FitInput input;
+  FitSettingsRecord settings;
+  std::vector<FitModel> models;
+  std::vector<std::pair<std::string, double>> bayes_factors_deciban, bayes_factor_errors_deciban;  ///< by order
+  std::string selected_order, selected_rule;
+  std::vector<FitParameter> parameters;        ///< the selected order's
+  std::optional<FitPredictive> predictive;     ///< absent in older fits
+  std::optional<std::vector<std::string>> warnings;  ///< absent in older fits
+  std::optional<std::string> posterior;        ///< file name of the posterior index, when written
+
+  /// The "models" entry of `order` (empty: the selected order), compared as parsed orders (Order::parse,
+  /// which throws InputError for text that is not one); nullptr when that order was not fitted.
+  const FitModel* model(const std::string& order = {}) const;
+};
+
+}  // namespace admitgen
