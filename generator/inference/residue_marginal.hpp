@@ -12,8 +12,9 @@
 /// P_box being the t's mass inside the residue box (V_r its volume). P_box is bounded by its
 /// coordinate marginals (exact univariate t intervals):
 ///   P_lo = max(0, 1 − Σ_k (1 − P_k)) ≤ P_box ≤ P_up = min_k P_k,
-/// and the sampler uses P_up (exact for p = 1). The run then reports ln Z_up ≥ ln Z ≥ ln Z_up + ln(1 − g),
-/// g = E_posterior[1 − P_lo/P_up], which fit_order checks against a tolerance (selection/fit.hpp).
+/// with further upper bounds along the eigen-directions of the box-scaled covariance; the sampler uses P̃,
+/// their product averaged over the t's scale (docs/method.md, "The box mass the sampler uses"), clamped to
+/// [P_lo, P_up], and the pole sampler reweights by P̂/P̃ (inference/poles_sampler.hpp).
 #pragma once
 
 #include "data/measurement.hpp"
