@@ -23,6 +23,8 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 using namespace admitgen;
@@ -122,8 +124,12 @@ Estimate importance_log_z(const Measurement& data, const Order& order, const Pri
   return {top + std::log(mean), std::sqrt((sum2 / n - mean * mean) / n) / mean};
 }
 
+Measurement reference_file() {
+  return read_measurement(test::sample("reference/q1s1_sigma0.01.csv"), ReadOptions{});
+}
+
 void check_against_importance(const Order& order, const PriorRanges& priors) {
-  const Measurement data = read_measurement(test::sample("reference/q1s1_sigma0.01.csv"), ReadOptions{});
+  const Measurement data = reference_file();
   const Estimate reference = importance_log_z(data, order, priors, 20000);
   FitSettings settings;
   settings.priors = priors;
@@ -148,5 +154,43 @@ TEST_SUITE("statistical") {
     PriorRanges cut = table1;
     cut.g_inf.hi = 0.468;
     check_against_importance(Order(1, 1), cut);
+  }
+
+  TEST_CASE("pole sampler: 24 seeds scatter as reported and centre on importance sampling (Q1S1, Q1S2)") {
+    // Seeds 100-123; Q1S1 with 100 live points, Q1S2 with 300 (at 100 its estimates have a low tail, about
+    // one run in six 1.5-3 nats low, and a spread 2.8x the reported error: docs/method.md, "Status of the
+    // pole sampler"). The sample standard deviation of 24 values has a relative standard error of
+    // 1/√(2·23) ≈ 15 %, so a factor-2 band around the mean reported error is decisive; the mean of the 24
+    // estimates has standard error spread/√24, and a sampler whose exploration misses part of the pole
+    // space would sit several of those below the reference. About 1 min of CPU.
+    const Measurement data = reference_file();
+    for (const auto& [order, live] : {std::pair{Order(1, 1), 100}, std::pair{Order(1, 2), 300}}) {
+      const Estimate reference = importance_log_z(data, order, PriorRanges::table1(), 20000);
+      FitSettings settings;
+      settings.sampler.live = live;
+      settings.sampler_kind = SamplerKind::poles;
+      std::vector<double> log_z, err;
+      int on_poles = 0;
+      for (std::uint64_t seed = 100; seed < 124; ++seed) {
+        settings.sampler.seed = seed;
+        const ModelResult m = fit_order(data, order, settings);
+        on_poles += m.sampler == "poles_analytic_residues" ? 1 : 0;
+        log_z.push_back(m.run.log_z);
+        err.push_back(m.run.log_z_error);
+      }
+      const double n = static_cast<double>(log_z.size());
+      const double mean = std::accumulate(log_z.begin(), log_z.end(), 0.0) / n;
+      double var = 0.0;
+      for (double v : log_z) var += (v - mean) * (v - mean);
+      const double spread = std::sqrt(var / (n - 1.0));
+      const double reported = std::accumulate(err.begin(), err.end(), 0.0) / n;
+      MESSAGE(order.name(), ", ", live, " live, 24 seeds: mean ln Z ", mean, ", spread ", spread, ", mean reported error ",
+              reported, ", importance sampling ", reference.log_z, " ± ", reference.error, ", ", on_poles,
+              " runs on the pole sampler");
+      CHECK(on_poles == 24);
+      CHECK(spread <= 2.0 * reported);
+      CHECK(spread >= 0.5 * reported);
+      CHECK(std::abs(mean - reference.log_z) <= 3.0 * std::hypot(spread / std::sqrt(n), reference.error));
+    }
   }
 }
