@@ -9,7 +9,7 @@
 namespace admitgen::checks {
 
 /// Continuous causality and stability: every pole −λ_q, −α_s ± jβ_s in the open left half-plane
-/// (physics.md §2.1). The margin is the slowest decay rate.
+/// (docs/physics.md §2.1). The margin is the slowest decay rate.
 CheckResult check_causality(const CheckSubject& s) {
   CheckResult r;
   r.name = "causality";

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// `admitgen check` as a library: what is checked (a header's machine-readable block and C tables, or a
-/// fit's continuous model) and the six checks of the issue plus the header's self-consistency:
+/// fit's continuous model) and the six safety checks plus the header's self-consistency:
 ///
 ///  causality             every λ_q, α_s > 0 (continuous poles in the left half-plane)
 ///  discrete_stability    every emitted, quantised pole |z| < 1, exactly (integer arithmetic for q31/q15)
-///  passivity_continuous  Re G(jω) ≥ 0 ∀ω ≥ 0 by the Hamiltonian eigenvalue test (checks/passivity.hpp)
+///  passivity_continuous  Re G(jω) ≥ 0 ∀ω ≥ 0 by the Hamiltonian eigenvalue test (model/passivity.hpp)
 ///  passivity_discrete    Re H(e^{jθ}) ≥ 0 on [0, π] for the emitted, quantised filter (bilinear map z → s)
 ///  headroom              L1 norm of each state's and the output's impulse response within its Q range,
 ///                        64-bit accumulator bounds (q31/q15)

@@ -35,7 +35,7 @@ std::pair<double, double> pair_state_l1(const codegen::PairTerm& p) {
 
 }  // namespace
 
-/// physics.md §3.3: for |u| ≤ 1, |state| ≤ ‖h_state‖₁ (tight for the worst-case sign input), so each
+/// docs/physics.md §3.3: for |u| ≤ 1, |state| ≤ ‖h_state‖₁ (tight for the worst-case sign input), so each
 /// state needs ‖h_state‖₁ ≤ 1 (Q1.31 range [−1, 1)) and the output needs ‖h‖₁ ≤ 2^out_shift; the 64-bit
 /// sums need Σ|mantissa| < 2^B per state update and over the output table (coefficients.hpp).
 CheckResult check_headroom(const CheckSubject& s) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "cli/diagnose_command.hpp"
 
+#include "cli/options.hpp"
 #include "codegen/coefficients.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
@@ -22,7 +23,7 @@ namespace {
 using namespace admitgen::diagnosis;
 
 /// --sim names a CSV when such a file exists, a material SPEC otherwise.
-SimulatedSide simulated_side(const DiagnoseOptions& o, const ReadOptions& read, const Air& air) {
+SimulatedSide simulated_side(const DiagnoseCommand& o, const ReadOptions& read, const Air& air) {
   if (o.fit) {
     const auto surface = multipole_from_fit(read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
     return SimulatedSide::from_material(Material{surface}, air, "fit " + *o.fit + " (" + surface.order.name() + ", mean)");
@@ -32,19 +33,16 @@ SimulatedSide simulated_side(const DiagnoseOptions& o, const ReadOptions& read, 
   return SimulatedSide::from_material(parse_material_spec(*o.sim), air, "SPEC " + *o.sim);
 }
 
-DiagnosisRequest to_request(const DiagnoseOptions& o) {
+DiagnosisRequest to_request(const DiagnoseCommand& o) {
   if (o.sim.has_value() == o.fit.has_value())
     throw InputError("give exactly one of --sim (CSV or material SPEC) and --fit FIT.json");
   if (o.fs && !o.fit) throw InputError("--fs needs --fit: the pipeline stages start from a fit");
   if (o.format_given && !o.fs) throw InputError("--format needs --fs (and --fit)");
-  const ReadOptions read = o.read.to_read_options();
-  const TubeSetup tube{o.tube_diameter, o.mic_spacing, o.mic_distance, o.temperature};
+  const ReadOptions& read = o.read;
+  const TubeSetup& tube = o.tube;
   if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
-  DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(o.temperature)), tube, {},
-                     std::nullopt};
-  r.sampler.live = o.live;
-  r.sampler.dlogz = o.dlogz;
-  r.sampler.seed = o.seed;
+  DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(tube.temperature_c)), tube,
+                     o.sampler, std::nullopt};
   if (o.fs) r.stages = StageRequest{read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
   return r;
 }
@@ -74,7 +72,7 @@ void print_summary(const Diagnosis& d, const std::string& path) {
 }  // namespace
 
 void setup_diagnose_command(CLI::App& app, int& exit_code) {
-  auto opt = std::make_shared<DiagnoseOptions>();
+  auto cmd = std::make_shared<DiagnoseCommand>();
   auto* sub = app.add_subcommand("diagnose", "Where the sim-to-real gap lies, which unmodelled effect causes it, how far it shrinks");
   sub->footer(
       "Examples:\n"
@@ -82,29 +80,26 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       "      --mic-spacing 0.05 --mic-distance 0.1 --out diag\n"
       "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
       "Decision: the effect with the largest Bayes factor against no effect if it reaches 20 dB, else none.");
-  sub->add_option("--real,-r", opt->real, "Measured admittance (CSV, read with the data options)")->required();
-  auto* sim = sub->add_option("--sim,-s", opt->sim, "Simulated admittance: a CSV (same data options) or a material SPEC");
-  auto* fit = sub->add_option("--fit", opt->fit, "fit.json: its selected model is the simulated side");
+  sub->add_option("--real,-r", cmd->real, "Measured admittance (CSV, read with the data options)")->required();
+  auto* sim = sub->add_option("--sim,-s", cmd->sim, "Simulated admittance: a CSV (same data options) or a material SPEC");
+  auto* fit = sub->add_option("--fit", cmd->fit, "fit.json: its selected model is the simulated side");
   sim->excludes(fit);
-  sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
-  sub->add_option("--fs", opt->fs, "Sample rate [Hz] of the pipeline stages (with --fit)");
-  sub->add_option("--format", opt->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
-  add_data_options(*sub, opt->read);
-  sub->add_option("--tube-diameter", opt->tube_diameter, "Tube diameter d [m] (edge_gap, chain effects)");
-  sub->add_option("--mic-spacing", opt->mic_spacing, "Microphone spacing s [m] (chain effects)");
-  sub->add_option("--mic-distance", opt->mic_distance, "Sample face to the farther microphone x1 [m] (chain effects)");
-  sub->add_option("--temperature", opt->temperature, "Air temperature [C]")->capture_default_str();
-  sub->add_option("--live", opt->live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
-  sub->add_option("--dlogz", opt->dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
-  sub->add_option("--seed", opt->seed, "Random seed (each effect derives its own stream)")->capture_default_str();
-  sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
-  sub->callback([opt, sub, &exit_code] {
-    opt->format_given = sub->count("--format") > 0;
-    exit_code = run_diagnose_command(*opt);
+  sub->add_option("--out,-o", cmd->out, "Output directory (created if missing)")->required();
+  sub->add_option("--fs", cmd->fs, "Sample rate [Hz] of the pipeline stages (with --fit)");
+  sub->add_option("--format", cmd->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
+  add_data_options(*sub, cmd->read);
+  add_tube_options(*sub, cmd->tube);
+  sub->add_option("--live", cmd->sampler.live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
+  sub->add_option("--dlogz", cmd->sampler.dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
+  sub->add_option("--seed", cmd->sampler.seed, "Random seed (each effect derives its own stream)")->capture_default_str();
+  sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
+  sub->callback([cmd, sub, &exit_code] {
+    cmd->format_given = sub->count("--format") > 0;
+    exit_code = run_diagnose_command(*cmd);
   });
 }
 
-int run_diagnose_command(const DiagnoseOptions& o) {
+int run_diagnose_command(const DiagnoseCommand& o) {
   const DiagnosisRequest request = to_request(o);
   ensure_writable_directory(o.out);
   const Diagnosis d = run_diagnosis(request);
@@ -115,7 +110,7 @@ int run_diagnose_command(const DiagnoseOptions& o) {
     for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
     print_summary(d, path);
   }
-  // contract.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an
+  // docs/cli.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an
   // identified cause (the verdict names an effect, Bayes factor >= 20 dB); `none` (the gap is noise or
   // no candidate explains it decisively) exits 0. diagnosis.json is written either way.
   return d.verdict.effect == "none" ? 0 : 1;

@@ -8,17 +8,20 @@
 /// diagnosis.json is written in both cases), 2 on bad input (nothing written).
 #pragma once
 
-#include "cli/data_options.hpp"
+#include "data/read_options.hpp"
+#include "diagnosis/effect_identification.hpp"
+#include "physics/synthetic_measurement.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <cstdint>
 #include <optional>
 #include <string>
 
 namespace admitgen::cli {
 
-struct DiagnoseOptions {
+/// What `diagnose` was asked: the two sides, the pipeline stages, and the library's settings (reading,
+/// tube, effect identification), which the options fill directly.
+struct DiagnoseCommand {
   std::string real;
   std::optional<std::string> sim;  ///< a CSV path if such a file exists, else a material SPEC
   std::optional<std::string> fit;
@@ -26,18 +29,13 @@ struct DiagnoseOptions {
   std::optional<double> fs;
   std::string format = "q31";
   bool format_given = false;
-  DataOptions read;  ///< for --real and a --sim CSV alike
-  std::optional<double> tube_diameter;
-  std::optional<double> mic_spacing;
-  std::optional<double> mic_distance;
-  double temperature = 20.0;
-  int live = 100;
-  double dlogz = 0.1;
-  std::uint64_t seed = 1;
+  ReadOptions read;  ///< for --real and a --sim CSV alike
+  TubeSetup tube;
+  diagnosis::IdentificationSettings sampler;
   bool quiet = false;
 };
 
 void setup_diagnose_command(CLI::App& app, int& exit_code);
-int run_diagnose_command(const DiagnoseOptions& options);
+int run_diagnose_command(const DiagnoseCommand& command);
 
 }  // namespace admitgen::cli

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "cli/emit_command.hpp"
 
+#include "cli/options.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
 #include "core/atomic_file.hpp"
@@ -30,48 +31,44 @@ std::string default_name(const std::string& out) {
 }  // namespace
 
 void setup_emit_command(CLI::App& app, int& exit_code) {
-  auto opt = std::make_shared<EmitOptions>();
+  auto cmd = std::make_shared<EmitCommand>();
+  codegen::EmitSettings& s = cmd->settings;
   auto* sub = app.add_subcommand("emit", "Generate the causal C header (recursive convolution) of a fit for the C99 runtime");
   sub->footer(
       "Example:\n  admitgen emit out/fit.json --fs 48000 --fs 96000 --format q31 --name wall --out wall.h\n"
       "The header holds one model per rate (exact poles, numerators refitted at the data frequencies for that\n"
       "rate), the band absorption tables, and a machine-readable block for admitgen check.");
-  sub->add_option("fit", opt->fit, "fit.json written by admitgen fit")->required()->check(CLI::ExistingFile);
-  sub->add_option("--fs", opt->fs_hz, "Sample rate in Hz (repeatable; whole Hz)")->required();
-  sub->add_option("--format", opt->format, "Coefficient and data format")->required()->check(CLI::IsMember({"f32", "q31", "q15"}));
-  sub->add_option("--name", opt->name, "C identifier prefix of the emitted tables (default: output file stem)");
-  sub->add_option("--out,-o", opt->out, "Header to write")->required();
-  sub->add_option("--order", opt->order, "Emit this order of the fit (e.g. Q0S2) instead of the selected one");
-  sub->add_option("--estimate", opt->estimate,
-                  "Parameters to emit: passive (best sample's poles, residues refitted under Re G >= 0; certified), "
-                  "posterior mean, or max_likelihood sample. A non-passive choice is made passive by the minimal "
-                  "change of its residues, stated in the header")
-      ->check(CLI::IsMember({"passive", "mean", "max_likelihood"}))->capture_default_str();
-  sub->add_option("--fir-taps", opt->fir_taps, "FIR taps of the refit (0 = fewest reaching 1e-5 relative error)")
+  sub->add_option("fit", cmd->fit, "fit.json written by admitgen fit")->required()->check(CLI::ExistingFile);
+  sub->add_option("--fs", s.fs_hz, "Sample rate in Hz (repeatable; whole Hz)")->required();
+  add_parsed_option(*sub, "--format", s.format, codegen::parse_format, "Coefficient and data format")
+      ->required()->check(CLI::IsMember({"f32", "q31", "q15"}));
+  sub->add_option("--name", s.name, "C identifier prefix of the emitted tables (default: output file stem)");
+  sub->add_option("--out,-o", cmd->out, "Header to write")->required();
+  sub->add_option("--order", s.order, "Emit this order of the fit (e.g. Q0S2) instead of the selected one");
+  add_parsed_option(*sub, "--estimate", s.estimate, parse_estimate,
+                    "Parameters to emit: passive (best sample's poles, residues refitted under Re G >= 0; certified), "
+                    "posterior mean, or max_likelihood sample. A non-passive choice is made passive by the minimal "
+                    "change of its residues, stated in the header")
+      ->check(CLI::IsMember({"passive", "mean", "max_likelihood"}))->default_str(estimate_name(s.estimate));
+  sub->add_option("--fir-taps", s.fir_taps, "FIR taps of the refit (0 = fewest reaching 1e-5 relative error)")
       ->check(CLI::Range(0, 8))->capture_default_str();
-  sub->add_option("--bands-json", opt->bands_json, "Also write the band absorption (octave, 1/3 octave) as JSON");
-  sub->add_option("--golden", opt->golden, "Also write bit-exact golden vectors of the first rate (q31/q15)");
-  sub->add_option("--golden-seed", opt->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
-  sub->add_option("--templates", opt->templates, "Directory holding admitgen_boundary.h.in (default: installed/source)");
-  sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
-  sub->add_flag("--no-passivity-enforcement", opt->no_passivity_enforcement,
-                "Experts: emit the chosen estimate as fitted, with a plain least-squares refit (no passivity "
-                "enforcement); a non-passive result is then refused unless --allow-unsafe is given too");
-  sub->add_flag("--allow-unsafe", opt->allow_unsafe,
+  sub->add_option("--bands-json", cmd->bands_json, "Also write the band absorption (octave, 1/3 octave) as JSON");
+  sub->add_option("--golden", cmd->golden, "Also write bit-exact golden vectors of the first rate (q31/q15)");
+  sub->add_option("--golden-seed", cmd->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
+  sub->add_option("--templates", cmd->templates, "Directory holding admitgen_boundary.h.in (default: the template built into admitgen)");
+  sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
+  add_clearing_flag(*sub, "--no-passivity-enforcement", s.enforce_passivity,
+                    "Experts: emit the chosen estimate as fitted, with a plain least-squares refit (no passivity "
+                    "enforcement); a non-passive result is then refused unless --allow-unsafe is given too");
+  sub->add_flag("--allow-unsafe", cmd->allow_unsafe,
                 "Write the header even when it fails admitgen check (non-causal, unstable, non-passive, overflow, "
                 "limit cycle); each failure is printed as a warning");
-  sub->callback([opt, &exit_code] { exit_code = run_emit_command(*opt); });
+  sub->callback([cmd, &exit_code] { exit_code = run_emit_command(*cmd); });
 }
 
-int run_emit_command(const EmitOptions& o) {
-  codegen::EmitSettings s;
-  s.fs_hz = o.fs_hz;
-  s.format = codegen::parse_format(o.format);
-  s.name = o.name.empty() ? default_name(o.out) : o.name;
-  s.order = o.order;
-  s.estimate = parse_estimate(o.estimate);
-  s.fir_taps = o.fir_taps;
-  s.enforce_passivity = !o.no_passivity_enforcement;
+int run_emit_command(const EmitCommand& o) {
+  codegen::EmitSettings s = o.settings;
+  if (s.name.empty()) s.name = default_name(o.out);
   if (!o.golden.empty() && s.format == codegen::Format::f32)
     throw InputError("--golden needs --format q31 or q15 (f32 output is not bit-exact across compilers)");
   const std::string tpl = codegen::load_template(o.templates, "admitgen_boundary.h.in");
@@ -83,7 +80,7 @@ int run_emit_command(const EmitOptions& o) {
   if (!result.safe()) {
     if (!o.allow_unsafe) {
       fmt::print(stderr, "admitgen: {}\n", result.refusal(o.out));
-      return 1;  // a check found a violation (contract exit code 1); nothing was written
+      return 1;  // a check found a violation (exit code 1, docs/cli.md); nothing was written
     }
     fmt::print(stderr, "warning: --allow-unsafe: {}\n", result.refusal(o.out));
   }
@@ -99,7 +96,7 @@ int run_emit_command(const EmitOptions& o) {
                  r.model.plrc_max_rel_error, r.model.folded.empty() ? "" : "; folded " + std::to_string(r.model.folded.size()),
                  r.model.passive_rounds == 0 ? "" : fmt::format("; refit constrained to Re H >= 0 ({} rounds)", r.model.passive_rounds));
     for (const auto& n : emission.notes) fmt::print("note: {}\n", n);
-    fmt::print("wrote {} ({} {}, {}, {} estimate{})\n", o.out, emission.surface.order.name(), o.format, s.name,
+    fmt::print("wrote {} ({} {}, {}, {} estimate{})\n", o.out, emission.surface.order.name(), codegen::format_name(s.format), s.name,
                estimate_name(emission.estimate), result.safe() ? "; passes admitgen check" : "; UNSAFE");
   }
   return 0;

@@ -5,33 +5,30 @@
 /// band-absorption JSON and bit-exact golden vectors.
 #pragma once
 
+#include "codegen/emission.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
 #include <string>
-#include <vector>
 
 namespace admitgen::cli {
 
-struct EmitOptions {
+/// What `emit` was asked: the files, the header's settings (filled by the options directly), and what
+/// to do with a header that fails `admitgen check`.
+struct EmitCommand {
   std::string fit;
-  std::vector<double> fs_hz;
-  std::string format;
-  std::string name;  ///< default: the output file's stem, made a C identifier
   std::string out;
-  std::string order;
-  std::string estimate = "passive";
-  int fir_taps = 0;
+  codegen::EmitSettings settings;  ///< an empty name: the output file's stem, made a C identifier
   std::string bands_json;
   std::string golden;
   std::uint64_t golden_seed = 1;
   std::string templates;
   bool quiet = false;
-  bool no_passivity_enforcement = false;  ///< emit the estimate as fitted, plain least-squares refit
   bool allow_unsafe = false;  ///< write the header even if `admitgen check` would fail it (warns per failure)
 };
 
 void setup_emit_command(CLI::App& app, int& exit_code);
-int run_emit_command(const EmitOptions& options);
+int run_emit_command(const EmitCommand& command);
 
 }  // namespace admitgen::cli

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "cli/fit_command.hpp"
 
+#include "cli/options.hpp"
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
+#include "inference/evidence.hpp"
 #include "output/fit_json.hpp"
 #include "output/posterior_export.hpp"
 #include "report/fit_report.hpp"
@@ -20,29 +22,6 @@
 
 namespace admitgen::cli {
 namespace {
-
-FitSettings to_settings(const FitOptions& o) {
-  FitSettings s;
-  s.qmax = o.qmax;
-  s.smax = o.smax;
-  s.sampler.live = o.live;
-  s.sampler.seed = o.seed;
-  s.sampler.dlogz = o.dlogz;
-  s.sampler.max_iterations = o.max_iterations;
-  s.sampler.slices = o.slices;
-  s.threads = o.threads;
-  s.missed_mode_retries = o.missed_mode_retries;
-  s.rule = SelectionRule::parse(o.select);
-  s.data_count = parse_data_count(o.likelihood_k);
-  s.reduce_symmetry = !o.no_symmetry_reduction;
-  s.passive = o.passive;
-  s.sampler_kind = parse_sampler_kind(o.sampler);
-  if (!o.priors.empty()) {
-    s.priors = PriorRanges::from_file(o.priors);
-    s.priors_origin = o.priors;
-  }
-  return s;
-}
 
 /// The evidence table plus each order's goodness of fit (selection/goodness_of_fit.hpp: relative RMS
 /// residual and max |delta alpha| at the max-likelihood parameters).
@@ -87,7 +66,8 @@ class CreatedDirectories {
 }  // namespace
 
 void setup_fit_command(CLI::App& app, int& exit_code) {
-  auto opt = std::make_shared<FitOptions>();
+  auto cmd = std::make_shared<FitCommand>();
+  FitSettings& s = cmd->settings;
   auto* sub = app.add_subcommand("fit", "Bayesian order selection and parameter estimation of a multipole admittance");
   sub->footer(
       "Example:\n  admitgen fit samples/basotect_tuberlin/rect_5cm.csv --columns f,_,_,_,_,re,im,_ "
@@ -96,47 +76,55 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
       "the evidence table. Beside fit.json for notebooks: posterior.json (schema admitgen.posterior/1: posterior\n"
       "mean and covariance per order), posterior_QxSy.csv (equally weighted samples of every order) and\n"
       "predictive.csv (the data with the posterior median and 95 % band).");
-  sub->add_option("data", opt->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
-  sub->add_option("--out,-o", opt->out, "Output directory (created if missing)")->required();
-  add_data_options(*sub, opt->read);
-  sub->add_option("--qmax", opt->qmax, "Largest number of real poles Q")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
-  sub->add_option("--smax", opt->smax, "Largest number of complex pole pairs S")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
-  sub->add_option("--live", opt->live, "Live points of nested sampling")->check(CLI::Range(10, 100000))->capture_default_str();
-  sub->add_option("--seed", opt->seed, "Random seed (each order derives its own stream)")->capture_default_str();
-  sub->add_option("--threads,-j", opt->threads, "Worker threads over orders (0 = all cores); results do not depend on it")
+  sub->add_option("data", cmd->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
+  sub->add_option("--out,-o", cmd->out, "Output directory (created if missing)")->required();
+  add_data_options(*sub, cmd->read);
+  sub->add_option("--qmax", s.qmax, "Largest number of real poles Q")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
+  sub->add_option("--smax", s.smax, "Largest number of complex pole pairs S")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
+  sub->add_option("--live", s.sampler.live, "Live points of nested sampling")->check(CLI::Range(10, 100000))->capture_default_str();
+  sub->add_option("--seed", s.sampler.seed, "Random seed (each order derives its own stream)")->capture_default_str();
+  sub->add_option("--threads,-j", s.threads, "Worker threads over orders (0 = all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024))->capture_default_str();
-  sub->add_option("--select", opt->select, "Selection rule: best | cheapest:DB (fewest buffers within DB deciban of the best)")
-      ->capture_default_str();
-  sub->add_option("--priors", opt->priors, "JSON prior ranges overriding Table 1, e.g. {\"lambda\": [0, 2e5]}");
-  sub->add_option("--likelihood-k", opt->likelihood_k, "Real data per complex point: 2N (default) or N (the paper's)")
-      ->check(CLI::IsMember({"2N", "N"}))->capture_default_str();
-  sub->add_option("--dlogz", opt->dlogz, "Stop when the live points can change ln Z by less than this")
+  add_parsed_option(*sub, "--select", s.rule, SelectionRule::parse,
+                    "Selection rule: best | cheapest:DB (fewest buffers within DB deciban of the best)")
+      ->default_str(s.rule.spelling());
+  sub->add_option_function<std::string>(
+      "--priors",
+      [&s](const std::string& path) {
+        s.priors = PriorRanges::from_file(path);
+        s.priors_origin = path;
+      },
+      "JSON prior ranges overriding Table 1, e.g. {\"lambda\": [0, 2e5]}");
+  add_parsed_option(*sub, "--likelihood-k", s.data_count, parse_data_count,
+                    "Real data per complex point: 2N (default) or N (the paper's)")
+      ->check(CLI::IsMember({"2N", "N"}))->default_str(s.data_count == DataCount::two_per_point ? "2N" : "N");
+  sub->add_option("--dlogz", s.sampler.dlogz, "Stop when the live points can change ln Z by less than this")
       ->check(CLI::Range(1e-6, 10.0))->capture_default_str();
-  sub->add_option("--max-iterations", opt->max_iterations, "Iteration cap per order (safety net)")
+  sub->add_option("--max-iterations", s.sampler.max_iterations, "Iteration cap per order (safety net)")
       ->check(CLI::Range(1L, 100'000'000L))->capture_default_str();
-  sub->add_option("--slices", opt->slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
-  sub->add_option("--missed-mode-retries", opt->missed_mode_retries,
+  sub->add_option("--slices", s.sampler.slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
+  sub->add_option("--missed-mode-retries", s.missed_mode_retries,
                   "Re-run orders whose best likelihood is below a nested order's, doubling --live each round")
       ->check(CLI::Range(0, 6))->capture_default_str();
-  sub->add_flag("--no-symmetry-reduction", opt->no_symmetry_reduction,
-                "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
-  sub->add_flag("--passive", opt->passive,
+  add_clearing_flag(*sub, "--no-symmetry-reduction", s.reduce_symmetry,
+                    "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
+  sub->add_flag("--passive", s.passive,
                 "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
                 "truncated to passive models");
-  sub->add_option("--sampler", opt->sampler,
-                  "full: sample every parameter; poles (experimental): sample the poles, integrate the residues "
-                  "analytically (falls back to full per order where the residue box cannot be corrected for; "
-                  "fit.json says which ran)")
-      ->check(CLI::IsMember({"poles", "full"}))->capture_default_str();
-  sub->add_flag("--quiet,-q", opt->quiet, "No progress or summary output");
-  sub->add_flag("--cost-only", opt->cost_only,
+  add_parsed_option(*sub, "--sampler", s.sampler_kind, parse_sampler_kind,
+                    "full: sample every parameter; poles (experimental): sample the poles, integrate the residues "
+                    "analytically (falls back to full per order where the residue box cannot be corrected for; "
+                    "fit.json says which ran)")
+      ->check(CLI::IsMember({"poles", "full"}))->default_str(s.sampler_kind == SamplerKind::full ? "full" : "poles");
+  sub->add_flag("--quiet,-q", cmd->quiet, "No progress or summary output");
+  sub->add_flag("--cost-only", cmd->cost_only,
                 "Read the data, print the cost estimate (printed before every fit) and stop: nothing is written");
-  sub->callback([opt, &exit_code] { exit_code = run_fit_command(*opt); });
+  sub->callback([cmd, &exit_code] { exit_code = run_fit_command(*cmd); });
 }
 
-int run_fit_command(const FitOptions& o) {
-  const ReadOptions read = o.read.to_read_options();
-  const FitSettings settings = to_settings(o);
+int run_fit_command(const FitCommand& o) {
+  const ReadOptions& read = o.read;
+  const FitSettings& settings = o.settings;
   const Measurement data = read_measurement(o.data, read);
   if (o.cost_only || !o.quiet) fmt::print(stderr, "{}\n", estimate_fit_cost(data, settings).describe());
   if (o.cost_only) return 0;
@@ -144,7 +132,7 @@ int run_fit_command(const FitOptions& o) {
   ensure_writable_directory(o.out);
   Progress progress(!o.quiet);
   progress.message(fmt::format("fitting {} points {:.6g}-{:.6g} Hz over Q0-{} x S0-{}", data.size(), data.f_hz[0],
-                               data.f_hz[data.size() - 1], o.qmax, o.smax));
+                               data.f_hz[data.size() - 1], settings.qmax, settings.smax));
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
   auto json = fit_to_json(data, read, settings, fit);

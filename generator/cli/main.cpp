@@ -2,10 +2,11 @@
 /// @file
 /// admitgen command line: one options struct + setup + run function per subcommand (cli/*_command.*).
 /// Only this function maps errors to exit codes: 0 success, 1 a check found a violation, 2 bad input.
-#include "cli/fit_command.hpp"
 #include "cli/check_command.hpp"
 #include "cli/diagnose_command.hpp"
 #include "cli/emit_command.hpp"
+#include "cli/fit_command.hpp"
+#include "cli/options.hpp"
 #include "cli/synth_command.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
@@ -38,10 +39,11 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "admitgen: error: {}\nRun with --help for usage.\n", e.what());
     return 2;
   } catch (const admitgen::UnsafeModelError& e) {
-    fmt::print(stderr, "admitgen: error: {}\n", e.what());
+    fmt::print(stderr, "admitgen: error: {}\n", e.spelled(admitgen::cli::flag_for));
     return 1;  // read, and unsafe: a check fails (the same exit code as admitgen check)
   } catch (const admitgen::InputError& e) {
-    fmt::print(stderr, "admitgen: error: {}\n", e.what());
+    // A library error names the setting at fault by its field; the user gave it as a flag.
+    fmt::print(stderr, "admitgen: error: {}\n", e.spelled(admitgen::cli::flag_for));
     return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "admitgen: internal error: {}\n", e.what());

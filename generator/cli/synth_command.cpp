@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "cli/synth_command.hpp"
 
+#include "cli/options.hpp"
 #include "data/csv_writer.hpp"
 #include "data/read_options.hpp"
 #include "physics/material_spec.hpp"
@@ -27,7 +28,7 @@ std::string describe_tube(const TubeSetup& t) {
                      length(t.spacing_m), length(t.mic1_distance_m), t.temperature_c);
 }
 
-CsvProvenance provenance(const SynthOptions& o, const SynthesisRequest& r, const Band& band) {
+CsvProvenance provenance(const SynthCommand& o, const SynthesisRequest& r, const Band& band) {
   return {{"material", o.material},
           {"effects", describe_effects(r.effects)},
           {"noise", r.noise_std > 0.0 ? fmt::format("complex Gaussian, std {} (E|n|^2 = std^2)", r.noise_std)
@@ -40,7 +41,7 @@ CsvProvenance provenance(const SynthOptions& o, const SynthesisRequest& r, const
 }  // namespace
 
 void setup_synth_command(CLI::App& app, int& exit_code) {
-  auto opt = std::make_shared<SynthOptions>();
+  auto cmd = std::make_shared<SynthCommand>();
   auto* sub = app.add_subcommand("synth", "Synthetic measured admittance from physical materials and measurement effects");
   sub->footer(
       "Examples:\n"
@@ -53,25 +54,23 @@ void setup_synth_command(CLI::App& app, int& exit_code) {
       "Effects: none reference_plane:delta_m mic_spacing:delta_m mic_mismatch:gain,phase_deg temperature:delta_k\n"
       "         tube_losses edge_gap:width_m,depth_m frame_resonance:f0_hz,q,y_peak\n"
       "         fractional_order:c_plus,c_minus,f_ref_hz air_gap:gap_m heteroscedastic_noise:scale");
-  sub->add_option("--material,-m", opt->material, "Material SPEC, e.g. 'miki(sigma=10000, d=50mm) + air(d=20mm)'")->required();
-  sub->add_option("--out,-o", opt->out, "Output CSV (columns f_hz, re_y, im_y; read by fit without options)")->required();
-  sub->add_option("--effect,-e", opt->effects, "Effect NAME or NAME:k=v,... (repeatable; see below)");
-  sub->add_option("--noise", opt->noise, "Std of complex Gaussian noise on y (E|n|^2 = std^2)")->capture_default_str();
-  sub->add_option("--seed", opt->seed, "Random seed of the noise")->capture_default_str();
-  sub->add_option("--band", opt->band, "Frequency range FMIN:FMAX in Hz")->capture_default_str();
-  sub->add_option("--points", opt->points, "Number of log-spaced frequencies")->check(CLI::Range(2, 1'000'000))->capture_default_str();
-  sub->add_option("--tube-diameter", opt->tube_diameter, "Tube diameter d [m] (tube_losses, edge_gap, chain effects)");
-  sub->add_option("--mic-spacing", opt->mic_spacing, "Microphone spacing s [m] (chain effects)");
-  sub->add_option("--mic-distance", opt->mic_distance, "Sample face to the farther microphone x1 [m] (chain effects)");
-  sub->add_option("--temperature", opt->temperature, "Air temperature [C]")->capture_default_str();
-  sub->add_flag("--quiet,-q", opt->quiet, "No summary output");
-  sub->callback([opt, &exit_code] { exit_code = run_synth_command(*opt); });
+  sub->add_option("--material,-m", cmd->material, "Material SPEC, e.g. 'miki(sigma=10000, d=50mm) + air(d=20mm)'")->required();
+  sub->add_option("--out,-o", cmd->out, "Output CSV (columns f_hz, re_y, im_y; read by fit without options)")->required();
+  sub->add_option("--effect,-e", cmd->effects, "Effect NAME or NAME:k=v,... (repeatable; see below)");
+  sub->add_option("--noise", cmd->request.noise_std, "Std of complex Gaussian noise on y (E|n|^2 = std^2)")->capture_default_str();
+  sub->add_option("--seed", cmd->request.seed, "Random seed of the noise")->capture_default_str();
+  sub->add_option("--band", cmd->band, "Frequency range FMIN:FMAX in Hz")->capture_default_str();
+  sub->add_option("--points", cmd->points, "Number of log-spaced frequencies")->check(CLI::Range(2, 1'000'000))->capture_default_str();
+  add_tube_options(*sub, cmd->request.tube);
+  sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
+  sub->callback([cmd, &exit_code] { exit_code = run_synth_command(*cmd); });
 }
 
-int run_synth_command(const SynthOptions& o) {
+int run_synth_command(const SynthCommand& o) {
   const Band band = Band::parse(o.band);
-  SynthesisRequest request{parse_material_spec(o.material), {}, log_spaced_frequencies(band.lo_hz, band.hi_hz, o.points),
-                           o.noise, o.seed, TubeSetup{o.tube_diameter, o.mic_spacing, o.mic_distance, o.temperature}};
+  SynthesisRequest request = o.request;
+  request.material = parse_material_spec(o.material);
+  request.f_hz = log_spaced_frequencies(band.lo_hz, band.hi_hz, o.points);
   for (const auto& text : o.effects) request.effects.push_back(parse_effect(text));
   const Synthesis result = synthesize(request);
   write_admittance_csv(o.out, request.f_hz, result.y, provenance(o, request, band));

@@ -6,31 +6,28 @@
 /// named measurement effects (physics/effects.hpp), written as a CSV that `fit` reads without options.
 #pragma once
 
+#include "physics/synthetic_measurement.hpp"
+
 #include <CLI/CLI.hpp>
 
-#include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace admitgen::cli {
 
-struct SynthOptions {
+/// What `synth` was asked: the material and effects as written (they are stamped into the CSV), the
+/// frequency grid, and the library's request, which the other options fill directly.
+struct SynthCommand {
   std::string material;
   std::string out;
   std::vector<std::string> effects;
-  double noise = 0.0;
-  std::uint64_t seed = 1;
   std::string band = "100:4000";  ///< default grid: 200 log-spaced points 100-4000 Hz (the paper's band)
   int points = 200;
-  std::optional<double> tube_diameter;
-  std::optional<double> mic_spacing;
-  std::optional<double> mic_distance;
-  double temperature = 20.0;
+  SynthesisRequest request;  ///< noise_std, seed, tube; material, effects and f_hz are set when it runs
   bool quiet = false;
 };
 
 void setup_synth_command(CLI::App& app, int& exit_code);
-int run_synth_command(const SynthOptions& options);
+int run_synth_command(const SynthCommand& command);
 
 }  // namespace admitgen::cli

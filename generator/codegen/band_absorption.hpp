@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// Per-band absorption from the continuous model, for engines that take band absorption instead of a
-/// filter (Steam Audio, FMOD/Wwise-style material tables; physics.md §4 "Geometric engines").
+/// filter (Steam Audio, FMOD/Wwise-style material tables; docs/physics.md §4.2 "Geometric engines").
 ///  * normal incidence: R = (1 − G)/(1 + G), α₀ = 1 − |R|² (G the normalised admittance);
 ///  * random incidence, locally reacting (London/Kuttruff; Paris integral in closed form), ζ = 1/G = ξ + jη:
 ///      α_st = 8ξ/|ζ|² [1 − ξ/|ζ|² ln(1 + 2ξ + |ζ|²) + (ξ² − η²)/(η|ζ|²) atan(η/(1 + ξ))]

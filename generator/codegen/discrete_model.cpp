@@ -39,7 +39,7 @@ cplx resolvent(cplx delta, double theta) {
   return 1.0 / (one_minus_unit(theta) - delta * e);
 }
 
-/// PLRC (Kelley–Luebbers; FOH) numerator of K/(a + s) at period T (physics.md §1.2):
+/// PLRC (Kelley–Luebbers; FOH) numerator of K/(a + s) at period T (docs/physics.md §1.2):
 /// χ = (1 − e^{−aT})/a, ξ = (1 − (1 + aT)e^{−aT})/(a²T), b0 = K(χ − ξ), b1 = Kξ.
 /// Series for small |aT| (the closed forms cancel catastrophically there).
 void plrc_numerator(cplx k, cplx a, double t, cplx& b0, cplx& b1) {

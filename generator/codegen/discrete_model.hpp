@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Continuous multipole admittance → discrete filter at one sample rate (physics.md §1.2-1.3).
+/// Continuous multipole admittance → discrete filter at one sample rate (docs/physics.md §1.2-1.3).
 ///
 /// Method "matched-exponential, refitted numerators":
 ///  * every pole keeps its exact discrete image z = e^{-aT} (the PLRC/FOH pole; L-stable, so a stiff
 ///    pole never leaves the sign-alternating tail a bilinear pole with aT > 2 would);
 ///  * the residues, the direct term and a short FIR path d_0..d_{L-1} are then fitted by weighted
 ///    linear least squares so that H(e^{jωT}) matches the continuous G(jω) at the fit's data frequencies
-///    (relative error, weight 1/|G|²) — "matched pole, fitted numerator" (physics.md §1.3 item 3b).
+///    (relative error, weight 1/|G|²) — "matched pole, fitted numerator" (docs/physics.md §1.3 item 3b).
 ///    PLRC alone leaves a second-order error ~ x/12·K T, x = (a + jω)T (Bernoulli expansion of
 ///    1/(1 − e^{−x})); the FIR taps absorb that polynomial in jωT, which residues alone cannot;
 ///  * poles decaying fast compared with the rate (a/2π > fold_factor · fs; e.g. above Nyquist, so that

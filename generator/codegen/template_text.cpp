@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -77,13 +76,6 @@ void render_range(const std::string& text, std::size_t pos, std::size_t end, Sco
   }
 }
 
-std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 }  // namespace
 
 std::string render_template(const std::string& text, const TemplateContext& context) {
@@ -94,24 +86,18 @@ std::string render_template(const std::string& text, const TemplateContext& cont
 }
 
 std::string load_template(const std::string& explicit_dir, const std::string& file) {
-  namespace fs = std::filesystem;
-  std::vector<fs::path> dirs;
-  if (!explicit_dir.empty()) {
-    dirs.emplace_back(explicit_dir);
-  } else {
-    if (const char* env = std::getenv("ADMITGEN_TEMPLATES")) dirs.emplace_back(env);
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) dirs.push_back(exe.parent_path().parent_path() / "share" / "admitgen" / "templates");
-    dirs.push_back(fs::path(ADMITGEN_SOURCE_DIR) / "templates");
+  if (explicit_dir.empty()) {
+    const std::string* text = embedded_template(file);
+    ADMITGEN_ENSURE(text != nullptr, "no template {} is embedded", file);
+    return *text;
   }
-  std::string searched;
-  for (const auto& d : dirs) {
-    const fs::path p = d / file;
-    if (fs::is_regular_file(p)) return read_all(p);
-    searched += (searched.empty() ? "" : ", ") + p.string();
-  }
-  throw InputError(fmt::format("template {} not found (searched {}); pass --templates DIR", file, searched));
+  const std::filesystem::path path = std::filesystem::path(explicit_dir) / file;
+  std::ifstream in(path, std::ios::binary);
+  if (!std::filesystem::is_regular_file(path) || !in)
+    throw FileError(path.string(), 0, "cannot read the template (the templates directory must hold " + file + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace admitgen::codegen

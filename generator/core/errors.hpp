@@ -7,15 +7,35 @@
 
 #include <fmt/format.h>
 
+#include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace admitgen {
 
+/// Names the setting at fault inside an error message: `key` is the settings field as a library caller
+/// writes it ("rho_c", "tube.diameter_m", "fs_hz"; "settings struct field" spelled as in the struct).
+/// The message keeps a mark around the key, so that InputError can tell which settings it names and a
+/// front end can respell them (the CLI writes its flag, "--rho-c"); what() shows the bare key.
+std::string setting(const std::string& key);
+
 /// Bad user input: a malformed data file, an impossible option, an unwritable path. Exit code 2.
+/// The message may name settings (setting()); what() spells each by its key.
 class InputError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit InputError(const std::string& message);
+  explicit InputError(const char* message) : InputError(std::string(message)) {}
+
+  /// The keys of the settings the message names, in order of appearance (repeats kept).
+  std::vector<std::string> settings() const;
+  /// The message with each named setting spelled by `spell(key)`.
+  std::string spelled(const std::function<std::string(const std::string& key)>& spell) const;
+  /// The message with its marks, for an error that quotes another one's (keeps its settings named).
+  const std::string& marked() const { return marked_; }
+
+ private:
+  std::string marked_;
 };
 
 /// An InputError located in a file: message reads "FILE:LINE: what (value 'VALUE')".

@@ -50,8 +50,9 @@ ColumnSelection by_position(const ColumnMap& map) {
 
 ColumnSelection by_name(const std::string& path, const TextTable& t, const ColumnMap& map) {
   if (!t.header)
-    throw FileError(path, 0, fmt::format("--columns '{}' names header columns, but the file has no header line of "
-                                         "column names: give the columns by position (e.g. f,re,im)", map.spec));
+    throw FileError(path, 0, fmt::format("{} '{}' names header columns, but the file has no header line of "
+                                         "column names: give the columns by position (e.g. f,re,im)",
+                                         setting("columns"), map.spec));
   const auto& h = t.header->fields;
   ColumnSelection s;
   s.width = h.size();
@@ -100,17 +101,18 @@ std::optional<ColumnSelection> from_header(const std::string& path, const TextTa
         const Found& f = found[static_cast<std::size_t>(q)];
         if (f.complete_cartesian() || f.complete_polar())
           throw FileError(path, header_line(t),
-                          fmt::format("--quantity {} but the header names {} columns, not {} ones (the header names "
-                                      "{}): drop --quantity or select the columns with --columns",
-                                      quantity_name(*o.quantity), quantity_name(q), quantity_name(*o.quantity),
-                                      header_list(t)));
+                          fmt::format("{} {} but the header names {} columns, not {} ones (the header names "
+                                      "{}): drop {} or select the columns with {}",
+                                      setting("quantity"), quantity_name(*o.quantity), quantity_name(q),
+                                      quantity_name(*o.quantity), header_list(t), setting("quantity"),
+                                      setting("columns")));
       }
     return std::nullopt;
   }
   if (freq.size() != 1)
     throw FileError(path, header_line(t),
-                    fmt::format("{} frequency column in the header (names {}): select the columns with --columns",
-                                freq.empty() ? "no" : "more than one", header_list(t)));
+                    fmt::format("{} frequency column in the header (names {}): select the columns with {}",
+                                freq.empty() ? "no" : "more than one", header_list(t), setting("columns")));
   const Found& f = found[static_cast<std::size_t>(*chosen)];
   ColumnSelection s;
   s.width = h.size();
@@ -133,8 +135,9 @@ void reconcile_quantity(const std::string& path, const TextTable& t, const ReadO
   if (m.kind != ColumnMeaning::Kind::value || m.quantity == s.quantity) return;
   if (o.quantity)
     throw FileError(path, header_line(t),
-                    fmt::format("--quantity {} but the header calls column {} '{}' (a {}): drop --quantity or correct it",
-                                quantity_name(*o.quantity), s.first + 1, h[s.first], quantity_name(m.quantity)));
+                    fmt::format("{} {} but the header calls column {} '{}' (a {}): drop {} or correct it",
+                                setting("quantity"), quantity_name(*o.quantity), s.first + 1, h[s.first],
+                                quantity_name(m.quantity), setting("quantity")));
   s.quantity = m.quantity;
   s.quantity_from_header = true;
 }
@@ -156,7 +159,8 @@ std::string absorption_only_message() {
          "reflection factor R at each frequency but not its phase, and a complex admittance needs both (two numbers "
          "per frequency; e.g. y = 0.5 and y = 0.8 + 0.6j both give alpha = 8/9 but are different surfaces). "
          "Export the complex reflection factor, impedance or admittance (re/im or magnitude/phase, which the "
-         "two-microphone method of ISO 10534-2 measures) and read it with --quantity; alpha alone cannot be fitted";
+         "two-microphone method of ISO 10534-2 measures) and read it with " + setting("quantity") +
+         "; alpha alone cannot be fitted";
 }
 
 ColumnSelection select_columns(const std::string& path, const TextTable& t, const ReadOptions& o) {

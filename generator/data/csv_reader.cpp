@@ -49,14 +49,14 @@ ValueUnits value_units(const std::string& path, const ColumnSelection& s, const 
   if (!s.polar) return u;
   const bool file_db = s.first_unit == UnitKind::decibel;
   if (o.magnitude && file_db && *o.magnitude != MagnitudeScale::decibel)
-    throw FileError(path, 0, "--magnitude linear, but the file gives the magnitude in dB");
+    throw FileError(path, 0, setting("magnitude") + " linear, but the file gives the magnitude in dB");
   u.magnitude = o.magnitude.value_or(file_db ? MagnitudeScale::decibel : MagnitudeScale::linear);
   const bool file_deg = s.second_unit == UnitKind::degrees, file_rad = s.second_unit == UnitKind::radians;
   if (o.phase && ((file_deg && *o.phase != PhaseUnit::degrees) || (file_rad && *o.phase != PhaseUnit::radians)))
-    throw FileError(path, 0, fmt::format("--phase-unit {}, but the file gives the phase in {}",
+    throw FileError(path, 0, fmt::format("{} {}, but the file gives the phase in {}", setting("phase"),
                                          *o.phase == PhaseUnit::degrees ? "deg" : "rad", file_deg ? "degrees" : "radians"));
   if (!o.phase && !file_deg && !file_rad)
-    throw FileError(path, 0, "the unit of the phase column is not stated in the file: give --phase-unit deg or --phase-unit rad");
+    throw FileError(path, 0, fmt::format("the unit of the phase column is not stated in the file: give {} deg or {} rad", setting("phase"), setting("phase")));
   u.phase = o.phase.value_or(file_deg ? PhaseUnit::degrees : PhaseUnit::radians);
   return u;
 }
@@ -67,11 +67,11 @@ void check_scale_units(const std::string& path, const ColumnSelection& s, const 
   const bool si = s.first_unit == UnitKind::si_impedance || s.first_unit == UnitKind::si_admittance ||
                   s.second_unit == UnitKind::si_impedance || s.second_unit == UnitKind::si_admittance;
   if (si && !o.rho_c)
-    throw FileError(path, 0, fmt::format("the file gives the {} in SI units (Pa s/m or m/(Pa s)): give --rho-c RHO_C "
+    throw FileError(path, 0, fmt::format("the file gives the {} in SI units (Pa s/m or m/(Pa s)): give {} RHO_C "
                                          "(rho0*c0 of the air in the tube in Pa s/m, {} at 20 C)",
-                                         quantity_name(s.quantity), kTypicalRhoC));
+                                         quantity_name(s.quantity), setting("rho_c"), kTypicalRhoC));
   if (o.rho_c && s.named_normalised && !si)
-    throw FileError(path, 0, "--rho-c given, but the column names say the values are normalised (Z/Z0, ratio): drop --rho-c");
+    throw FileError(path, 0, fmt::format("{} given, but the column names say the values are normalised (Z/Z0, ratio): drop {}", setting("rho_c"), setting("rho_c")));
 }
 
 std::vector<Row> parse_rows(const std::string& path, const TextTable& t, const ColumnSelection& s, const ValueUnits& u) {
@@ -80,8 +80,8 @@ std::vector<Row> parse_rows(const std::string& path, const TextTable& t, const C
   for (const TextLine& line : t.rows) {
     if (line.fields.size() != s.width)
       throw FileError(path, line.number,
-                      fmt::format("expected {} columns, found {} ({}; set --columns to describe the file{})", s.width,
-                                  line.fields.size(), t.describe(),
+                      fmt::format("expected {} columns, found {} ({}; set {} to describe the file{})", s.width,
+                                  line.fields.size(), t.describe(), setting("columns"),
                                   t.header ? ", the header names " + fmt::format("{} columns", t.header->fields.size()) : ""),
                       fmt::format("{}", fmt::join(line.fields, std::string(1, t.delimiter == '\t' ? ' ' : t.delimiter))));
     const auto number_at = [&](std::size_t index, const char* role) {
@@ -100,9 +100,9 @@ std::vector<Row> parse_rows(const std::string& path, const TextTable& t, const C
       continue;
     }
     if (u.magnitude == MagnitudeScale::linear && a < 0.0)
-      throw FileError(path, line.number, "negative magnitude: if the column is in dB, give --magnitude db", line.fields[s.first]);
+      throw FileError(path, line.number, "negative magnitude: if the column is in dB, give " + setting("magnitude") + " db", line.fields[s.first]);
     if (u.phase == PhaseUnit::radians && std::abs(b) > 2.0 * kPi * (1.0 + 1e-9))
-      throw FileError(path, line.number, "phase beyond 2 pi read in radians: if the column is in degrees, give --phase-unit deg",
+      throw FileError(path, line.number, "phase beyond 2 pi read in radians: if the column is in degrees, give " + setting("phase") + " deg",
                       line.fields[s.second]);
     const double mag = u.magnitude == MagnitudeScale::decibel ? std::pow(10.0, a / 20.0) : a;  // 20 log10 |x|
     rows.push_back({line.number, f, std::polar(mag, u.phase == PhaseUnit::degrees ? b * kPi / 180.0 : b)});
@@ -145,15 +145,15 @@ void keep_band(const std::string& path, std::vector<Row>& rows, const std::optio
   if (!band) return;
   rows.erase(std::remove_if(rows.begin(), rows.end(), [&](const Row& r) { return r.f < band->lo_hz || r.f > band->hi_hz; }),
              rows.end());
-  if (rows.empty()) throw FileError(path, 0, fmt::format("no data inside --band {}:{} Hz", band->lo_hz, band->hi_hz));
+  if (rows.empty()) throw FileError(path, 0, fmt::format("no data inside {} {}:{} Hz", setting("band"), band->lo_hz, band->hi_hz));
 }
 
 void check_options(const ReadOptions& options) {
   if (options.quantity == Quantity::reflection && options.rho_c)
-    throw InputError("--rho-c does not apply to a reflection factor (it is dimensionless)");
+    throw InputError(setting("rho_c") + " does not apply to a reflection factor (it is dimensionless)");
   if (options.rho_c && !(*options.rho_c > 0.0 && std::isfinite(*options.rho_c)))
-    throw InputError(fmt::format("--rho-c must be a positive number, got {}", *options.rho_c));
-  if (options.format.skip_rows < 0) throw InputError("--skip-rows must not be negative");
+    throw InputError(fmt::format("{} must be a positive number, got {}", setting("rho_c"), *options.rho_c));
+  if (options.format.skip_rows < 0) throw InputError(setting("format.skip_rows") + " must not be negative");
 }
 
 }  // namespace
@@ -167,7 +167,7 @@ Measurement read_measurement(const std::string& path, const ReadOptions& options
   const TextTable table = split_table(path, text, options.format);
   const ColumnSelection cols = select_columns(path, table, options);
   if (cols.quantity == Quantity::reflection && options.rho_c)
-    throw InputError("--rho-c does not apply to a reflection factor (it is dimensionless)");
+    throw InputError(setting("rho_c") + " does not apply to a reflection factor (it is dimensionless)");
   check_scale_units(path, cols, options);
   auto rows = parse_rows(path, table, cols, value_units(path, cols, options));
   sort_and_check(path, rows, m.warnings);

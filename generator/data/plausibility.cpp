@@ -14,7 +14,7 @@ struct Candidate {
   std::optional<double> rho_c;
 };
 
-/// y from the file's values under a candidate reading (contract.md, "Input data": y = v·ρc for SI
+/// y from the file's values under a candidate reading (docs/reading-data.md, "Options": y = v·ρc for SI
 /// admittance, ρc/v for impedance, (1 − R)/(1 + R) for a reflection factor).
 Eigen::ArrayXcd admittance_as(const Eigen::ArrayXcd& v, const Candidate& c) {
   const double rc = c.rho_c.value_or(1.0);

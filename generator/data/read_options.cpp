@@ -13,7 +13,7 @@ Quantity parse_quantity(const std::string& text) {
   if (text == "admittance") return Quantity::admittance;
   if (text == "impedance") return Quantity::impedance;
   if (text == "reflection") return Quantity::reflection;
-  throw InputError(fmt::format("--quantity '{}': expected admittance, impedance or reflection", text));
+  throw InputError(fmt::format("{} '{}': expected admittance, impedance or reflection", setting("quantity"), text));
 }
 
 const char* quantity_name(Quantity q) {
@@ -28,26 +28,26 @@ const char* quantity_name(Quantity q) {
 MagnitudeScale parse_magnitude_scale(const std::string& text) {
   if (text == "linear") return MagnitudeScale::linear;
   if (text == "db" || text == "dB") return MagnitudeScale::decibel;
-  throw InputError(fmt::format("--magnitude '{}': expected linear or db", text));
+  throw InputError(fmt::format("{} '{}': expected linear or db", setting("magnitude"), text));
 }
 
 PhaseUnit parse_phase_unit(const std::string& text) {
   if (text == "deg") return PhaseUnit::degrees;
   if (text == "rad") return PhaseUnit::radians;
-  throw InputError(fmt::format("--phase-unit '{}': expected deg or rad", text));
+  throw InputError(fmt::format("{} '{}': expected deg or rad", setting("phase"), text));
 }
 
 TimeConvention parse_time_convention(const std::string& text) {
   if (text == "+jwt") return TimeConvention::plus_jwt;
   if (text == "-jwt") return TimeConvention::minus_jwt;
-  throw InputError(fmt::format("--time-convention '{}': expected +jwt (e^{{+jwt}}, engineering) or -jwt "
-                               "(e^{{-iwt}}, physics)", text));
+  throw InputError(fmt::format("{} '{}': expected +jwt (e^{{+jwt}}, engineering) or -jwt "
+                               "(e^{{-iwt}}, physics)", setting("time_convention"), text));
 }
 
 Band Band::parse(const std::string& text) {
   const auto colon = text.find(':');
   const auto bad = [&](const char* why) {
-    return InputError(fmt::format("--band '{}': {} (expected FMIN:FMAX in Hz, e.g. 200:1600)", text, why));
+    return InputError(fmt::format("{} '{}': {} (expected FMIN:FMAX in Hz, e.g. 200:1600)", setting("band"), text, why));
   };
   if (colon == std::string::npos) throw bad("missing ':'");
   const auto lo = parse_double(text.substr(0, colon));
@@ -90,9 +90,9 @@ ColumnMap ColumnMap::parse(const std::string& spec) {
   ColumnMap map;
   map.spec = spec;
   const auto bad = [&](const std::string& why) {
-    return InputError(fmt::format("--columns '{}': {} (expected f, re, im (or mag, phase) and _ for skipped columns "
+    return InputError(fmt::format("{} '{}': {} (expected f, re, im (or mag, phase) and _ for skipped columns "
                                   "by position, e.g. f,_,_,_,_,re,im,_, or by header name, e.g. "
-                                  "f=Frequency [Hz],re=Re(Z/Z0),im=Im(Z/Z0))", spec, why));
+                                  "f=Frequency [Hz],re=Re(Z/Z0),im=Im(Z/Z0))", setting("columns"), spec, why));
   };
   const bool by_name = spec.find('=') != std::string::npos;
   std::vector<Role> seen;

@@ -2,7 +2,7 @@
 /// @file
 /// `admitgen diagnose` as a library: where the sim-to-real gap lies (gap_metrics), which pipeline
 /// stage adds it (stage_attribution, with a fit), which unmodelled effect causes it
-/// (effect_identification) and the verdict (verdict.hpp). The procedure follows physics.md §5.0:
+/// (effect_identification) and the verdict (verdict.hpp). The procedure follows docs/physics.md §5.0:
 /// gap and its whiteness → evidence of each effect added to the simulated side → the decisively
 /// supported one and how far the gap shrinks with it.
 #pragma once

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// diagnosis.json, schema "admitgen.diagnosis/1" (contract.md), with these extensions: "version",
+/// diagnosis.json, schema "admitgen.diagnosis/1" (docs/formats.md), with these extensions: "version",
 /// "input" and "settings" (sampler, likelihood, decision rule, the prior of every tried effect);
 /// per band "points", "gap_re", "gap_im"; the gap's "total_re", "total_im", "delta_alpha_max",
 /// "whiteness"; per stage "cumulative"; per effect "parameter_summary" (mean, std, ci95, max_likelihood,

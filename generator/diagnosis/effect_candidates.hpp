@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// The effects `diagnose` tries, each as a model of the measurement built on the simulated side:
-/// y_model(f; ϑ) = T_e[y_sim](f; ϑ), with ϑ free under a physically plausible prior. The contract
-/// effects (contract.md "Effects") use the physics layer's own closed forms and chain
+/// y_model(f; ϑ) = T_e[y_sim](f; ϑ), with ϑ free under a physically plausible prior. The documented
+/// effects (docs/cli.md "Effects") use the physics layer's own closed forms and chain
 /// (physics/effects.hpp, physics/two_microphone.hpp), so `diagnose` tests exactly what `synth` makes.
 ///
 /// Priors (ranges a real tube measurement can plausibly show; "log" = log-uniform):
@@ -22,7 +22,7 @@
 /// | frequency_scale (own) | ratio | log [0.8, 1.25], narrowed to where a table is known | ≥ ±2 % of it covered |
 ///
 /// frequency_scale, y' (f) = y_sim(f · ratio), is admitgen's own addition: a material whose thickness,
-/// stiffness or flow resistivity differs from the simulated one shifts its λ/4 resonances (physics.md
+/// stiffness or flow resistivity differs from the simulated one shifts its λ/4 resonances (docs/physics.md
 /// §5.1 i: "derivative-shaped" residual ∝ ω dY/dω); it applies to any simulated side.
 #pragma once
 

@@ -3,8 +3,8 @@
 
 #include "core/rng.hpp"
 #include "diagnosis/effect_likelihood.hpp"
+#include "inference/evidence.hpp"
 #include "inference/nested_sampler.hpp"
-#include "selection/selection_rule.hpp"
 
 #include <algorithm>
 

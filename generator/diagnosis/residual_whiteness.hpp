@@ -7,7 +7,7 @@
 ///   z = ρ₁ √(2(N − 1))
 /// is standard normal. A smooth unmodelled term makes neighbouring residuals alike: ρ₁ → 1, z ≫ 3.
 /// The residual is called white when |z| < 3 (two-sided p ≈ 0.003). This is the lag-1 test of
-/// physics.md §5.0 step 3; it needs the points ordered in frequency, which they are.
+/// docs/physics.md §5.0 step 3; it needs the points ordered in frequency, which they are.
 #pragma once
 
 #include <Eigen/Core>

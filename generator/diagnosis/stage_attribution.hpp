@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// How much of the gap each pipeline stage adds (physics.md §5.2 n-q), with `--fit FIT.json --fs HZ
+/// How much of the gap each pipeline stage adds (docs/physics.md §5.2 n-q), with `--fit FIT.json --fs HZ
 /// --format F`. The chain of admittances, each evaluated at the measurement's frequencies:
 ///
 ///   y_real ─fit─► G(jω) ─discretization─► H(e^{jωT}) ─quantization─► H_F(e^{jωT}) ─simulation─► y_FDTD

@@ -5,6 +5,7 @@
 #include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 #include "passivity/passive_residues.hpp"
 
 #include <fmt/format.h>
@@ -56,7 +57,7 @@ void enforce_continuous_passivity(codegen::EmissionSource& source) {
     if (!(source.surface.theta[Order::lambda(q)] > 0.0)) return;  // non-causal: causality check refuses it
   for (int s = 0; s < order.s(); ++s)
     if (!(source.surface.theta[order.alpha(s)] > 0.0)) return;
-  const checks::PassivityResult before = checks::continuous_passivity(order, source.surface.theta.data());
+  const PassivityResult before = continuous_passivity(order, source.surface.theta.data());
   if (before.passive) return;
   const Eigen::ArrayXd f = Eigen::Map<const Eigen::ArrayXd>(source.data_f_hz.data(), Eigen::Index(source.data_f_hz.size()));
   const Eigen::ArrayXd omega = 2.0 * kPi * f;

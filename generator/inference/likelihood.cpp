@@ -12,7 +12,7 @@ namespace admitgen {
 DataCount parse_data_count(const std::string& text) {
   if (text == "2N") return DataCount::two_per_point;
   if (text == "N") return DataCount::one_per_point;
-  throw InputError(fmt::format("--likelihood-k '{}': expected 2N (default) or N (the paper's count)", text));
+  throw InputError(fmt::format("{} '{}': expected 2N (default) or N (the paper's count)", setting("data_count"), text));
 }
 
 std::string describe(DataCount count) {

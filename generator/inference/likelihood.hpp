@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// Likelihood of a multipole model given complex admittance data, with the noise variance
-/// marginalised under a Jeffreys prior (method.md; paper eq. 10-11):
+/// marginalised under a Jeffreys prior (docs/method.md; paper eq. 10-11):
 ///   ln L(ϑ) = ln Γ(K/2) − ln 2 − (K/2) ln(π Σ_k ε_k²),
 ///   Σ_k ε_k² = Σ_i [Re²(D_i − G_i) + Im²(D_i − G_i)].
 /// (∫ (2πσ²)^{−K/2} e^{−E/2σ²} dσ/σ = ½ Γ(K/2) (πE)^{−K/2}.)

@@ -62,8 +62,8 @@ NestedRun run_nested_sampling(int dim, const PriorTransformFn& prior_transform, 
     do {
       if (draws >= kMaxDrawsPerPoint * n)
         throw InputError(fmt::format("fewer than 1 in {} prior draws has a finite likelihood (a support this small, "
-                                     "e.g. --passive with a prior of almost only non-passive models, cannot be "
-                                     "sampled)", kMaxDrawsPerPoint));
+                                     "e.g. a prior truncated to passive models when almost none of them is, "
+                                     "cannot be sampled)", kMaxDrawsPerPoint));
       for (int k = 0; k < dim; ++k) live_u(k, i) = rng.uniform();
       if (fold) fold(live_u.col(i).data());
       prior_transform(live_u.col(i).data(), live_theta.col(i).data());

@@ -82,7 +82,7 @@ PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bo
   ranges_.validate("priors");
   if (reduced_ && order.s() > 0 && (ranges_.beta.lo != -ranges_.beta.hi || ranges_.c.lo != -ranges_.c.hi))
     throw InputError("symmetry reduction needs beta and C prior ranges symmetric about 0; "
-                     "make them symmetric or pass --no-symmetry-reduction");
+                     "make them symmetric or pass " + setting("reduce_symmetry = false"));
 }
 
 void PriorTransform::operator()(const double* u, double* theta) const {

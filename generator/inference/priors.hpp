@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Uniform priors per parameter family (method.md, paper Table 1) and the unit-cube transform that
+/// Uniform priors per parameter family (docs/method.md, paper Table 1) and the unit-cube transform that
 /// nested sampling draws through, optionally in the symmetry-reduced space.
 ///
 /// Symmetry reduction: the likelihood is invariant under (β_s, C_s) → (−β_s, −C_s) for each pair and
 /// under any permutation of the real poles or of the pairs. The reduced space keeps one copy, the
 /// canonical domain λ_1 ≤ … ≤ λ_Q, α_1 ≤ … ≤ α_S, β_s ≥ 0 (reports re-sort pairs by β, the
-/// contract's form, with fold_to_reduced). It holds
+/// reported form, with fold_to_reduced). It holds
 /// 1/(Q! S! 2^S) of the prior mass and its prior density is higher by that factor, so
 /// Z = ∫ L π dθ is unchanged (L takes the same value on every copy).
 /// The sampler reaches it by folding, not by a sorted transform: chains move in the full unit cube
@@ -73,7 +73,7 @@ class PriorTransform {
   bool reduced_;
 };
 
-/// Maps any θ to the contract's reporting form (λ ascending; β ≥ 0 with C flipped alongside, pairs by
+/// Maps any θ to fit.json's reporting form (λ ascending; β ≥ 0 with C flipped alongside, pairs by
 /// ascending β); applied to every run before it is summarised.
 void fold_to_reduced(const Order& order, double* theta);
 

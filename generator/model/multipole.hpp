@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Evaluation of the multipole admittance (method.md; paper eq. 2-3), e^{+jωt}:
+/// Evaluation of the multipole admittance (docs/method.md; paper eq. 2-3), e^{+jωt}:
 ///   G(ω) = G∞ + Σ_q A_q/(λ_q + jω) + Σ_s [Θ_s/(θ_s + jω) + Θ_s*/(θ_s* + jω)],
 ///   Θ_s = B_s + jC_s, θ_s = α_s + jβ_s.
 /// One code path for every order: the loops run over terms, each term is whole-array arithmetic on

@@ -44,7 +44,7 @@ std::vector<Family> Order::families() const {
 
 std::vector<Order> order_grid(int qmax, int smax) {
   if (qmax < 0 || smax < 0)
-    throw InputError(fmt::format("--qmax {} / --smax {}: both must be 0 or more", qmax, smax));
+    throw InputError(fmt::format("{} {} / {} {}: both must be 0 or more", setting("qmax"), qmax, setting("smax"), smax));
   std::vector<Order> grid;
   for (int q = 0; q <= qmax; ++q)
     for (int s = 0; s <= smax; ++s) grid.emplace_back(q, s);

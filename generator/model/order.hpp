@@ -3,7 +3,7 @@
 /// A multipole model order "QxSy" and the one packing of its parameter vector, used by inference,
 /// reports, codegen and diagnosis alike (never re-derive the packing elsewhere).
 ///
-/// Packing (method.md, paper eq. 2), interleaved per term in the order the contract names them:
+/// Packing (docs/method.md, paper eq. 2), interleaved per term in the order fit.json names them:
 ///   θ = [G∞, A_1, λ_1, …, A_Q, λ_Q, B_1, C_1, α_1, β_1, …, B_S, C_S, α_S, β_S],
 /// so dim = 1 + 2Q + 4S, and a time-domain solver needs Q + 2S state buffers per boundary node.
 #pragma once

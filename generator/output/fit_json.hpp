@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// fit.json, schema "admitgen.fit/1" (contract.md), with these extensions: per-model parameter
+/// fit.json, schema "admitgen.fit/1" (docs/formats.md), with these extensions: per-model parameter
 /// summaries, Bayes-factor errors, the read options, and the selected order's predictive band.
 /// Keys keep a fixed order and numbers print so they read back exactly (nlohmann's shortest
 /// round-trip form), so equal inputs give equal bytes.

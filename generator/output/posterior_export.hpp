@@ -6,7 +6,7 @@
 ///                       mean and covariance (from the weighted nested-sampling points), the Kish
 ///                       effective sample size and the name of the order's samples file;
 ///   posterior_QxSy.csv  equally weighted posterior samples of that order, one row per draw, a header
-///                       of parameter names (contract names, reduced form: β ≥ 0, λ and β ascending);
+///                       of parameter names (fit.json names, reduced form: β ≥ 0, λ and β ascending);
 ///   predictive.csv      the data with the selected order's posterior predictive median and 95 % band
 ///                       of Re G, Im G and α (the numbers of fit.json's "predictive").
 /// Numbers print with 17 significant digits (they read back exactly); files depend only on the runs

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "passivity/passive_estimate.hpp"
 
-#include "checks/passivity.hpp"
 #include "core/errors.hpp"
+#include "model/passivity.hpp"
 #include "passivity/passive_residues.hpp"
 
 #include <algorithm>
@@ -27,7 +27,7 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
     const Eigen::VectorXd& sample = candidates[static_cast<std::size_t>(k)];
     PassiveEstimate e;
     e.candidate_rank = k;
-    const checks::PassivityResult as_is = checks::continuous_passivity(order, sample.data());
+    const PassivityResult as_is = continuous_passivity(order, sample.data());
     if (as_is.passive) {
       e.theta = sample;
       e.certified = true;

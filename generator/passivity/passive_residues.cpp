@@ -58,7 +58,7 @@ std::vector<double> initial_constraints(const Order& order, const Eigen::VectorX
 
 /// Violations to add: each negative band's minimum and 9 points spanning it (geometric when it starts
 /// above 0 Hz), so one round covers the whole band (rad/s).
-void add_violations(const checks::PassivityResult& r, std::vector<double>& omega) {
+void add_violations(const PassivityResult& r, std::vector<double>& omega) {
   const auto rad = [](double hz) { return 2.0 * kPi * hz; };
   for (const auto& b : r.bands) {
     if (std::isfinite(b.at)) omega.push_back(rad(b.at));
@@ -91,7 +91,7 @@ PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& thet
                                   "r = (margin, 0, ...) satisfies them)");
     set_residues(order, sol.x, out.theta);
     out.constraints = static_cast<int>(omega.size());
-    out.certificate = checks::continuous_passivity(order, out.theta.data());
+    out.certificate = continuous_passivity(order, out.theta.data());
     if (out.certificate.passive) {
       out.certified = true;
       return out;

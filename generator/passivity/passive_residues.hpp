@@ -9,14 +9,14 @@
 ///   min_r Σ_i w_i² |t_i − Σ_k r_k φ_k(ω_i)|²   s.t.   Re Σ_k r_k φ_k(ω_j) ≥ δ   for ω_j ∈ Ω,
 ///
 /// solved exactly (numerics/least_squares_inequality.hpp) on a finite constraint set Ω, then certified for
-/// every ω ≥ 0 by the Hamiltonian test (checks/passivity.hpp). Frequencies where the test still finds
+/// every ω ≥ 0 by the Hamiltonian test (model/passivity.hpp). Frequencies where the test still finds
 /// Re G < 0 are added to Ω and the problem is solved again (constraint generation, Kelley's cutting
 /// planes); since the certified set only grows, this ends in a few rounds. δ > 0 is a margin of 1e-9 of
 /// the target's scale that keeps the certificate robust against rounding.
 #pragma once
 
-#include "checks/passivity.hpp"
 #include "model/order.hpp"
+#include "model/passivity.hpp"
 
 #include <Eigen/Core>
 
@@ -31,7 +31,7 @@ struct ResidueTarget {
 
 struct PassiveResidues {
   Eigen::VectorXd theta;               ///< the given poles with the fitted residues
-  checks::PassivityResult certificate; ///< the Hamiltonian test of theta (certificate.passive when certified)
+  PassivityResult certificate; ///< the Hamiltonian test of theta (certificate.passive when certified)
   bool certified = false;
   int rounds = 0;                      ///< constraint-generation rounds (1 = the first grid sufficed)
   int constraints = 0;                 ///< size of the final constraint set Ω

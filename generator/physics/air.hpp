@@ -15,7 +15,7 @@ struct Air {
   double gamma;          ///< ratio of specific heats γ
   double p0;             ///< static pressure P0 [Pa]
 
-  /// Air at T °C and 101325 Pa, exactly as contract.md fixes it:
+  /// Air at T °C and 101325 Pa, exactly as docs/cli.md ("Effects") states it:
   ///   c = 20.047·√(273.15 + T),  ρ0 = 101325/(287.05·(273.15 + T)),
   /// with η from Sutherland's law η = 1.458e-6·T_K^{3/2}/(T_K + 110.4) (1.813e-5 Pa·s at 20 °C),
   /// Pr = 0.71, γ = 1.4. Throws InputError unless −100 °C < T < 200 °C.

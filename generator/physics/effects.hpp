@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// The measurement and mounting effects of contract.md ("Effects: one vocabulary for `synth --effect`
-/// and `diagnose`"), by their contract names and parameters, written `NAME` or `NAME:k=v,k=v`:
+/// The measurement and mounting effects of docs/cli.md ("Effects": one vocabulary for `synth --effect`
+/// and `diagnose`), by their documented names and parameters, written `NAME` or `NAME:k=v,k=v`:
 ///
 /// | name | parameters | acts on |
 /// |---|---|---|
@@ -72,7 +72,7 @@ using Effect = std::variant<NoEffect, ReferencePlane, MicSpacing, MicMismatch, T
 
 /// Parses `NAME` or `NAME:k=v,...`; throws InputError naming the effect and what is wrong.
 Effect parse_effect(const std::string& text);
-/// The contract name, e.g. "frame_resonance".
+/// The documented name, e.g. "frame_resonance".
 std::string effect_name(const Effect& effect);
 /// Canonical text `NAME:k=v,...` (shortest round-trip numbers, SI units) that parse_effect reads back.
 std::string to_string(const Effect& effect);
@@ -95,7 +95,7 @@ Eigen::ArrayXcd apply_reference_plane(const ReferencePlane& e, const Air& air, c
 Eigen::ArrayXcd apply_edge_gap(const EdgeGap& e, double tube_diameter_m, const Air& air, const Eigen::ArrayXd& f_hz,
                                const Eigen::ArrayXcd& y);
 
-/// Normalised admittance of a rigid-backed slit of width w and depth h (physics.md §5.1 f), with the
+/// Normalised admittance of a rigid-backed slit of width w and depth h (docs/physics.md §5.1 f), with the
 /// low-reduced-frequency slit fluid:
 ///   ρ_e = ρ0/[1 − tanh(σ_v)/σ_v],  K_e = γP0/[1 + (γ−1) tanh(σ_t)/σ_t],
 ///   σ_v = (w/2)√(jω/ν),  σ_t = (w/2)√(jω Pr/ν),

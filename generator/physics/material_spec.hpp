@@ -19,7 +19,7 @@
 /// | `mpp` | `hole` (diameter), `t` (thickness), `p` (perforation ratio) | Maa 1998 panel (put an `air` cavity behind it) |
 /// | `air` | `d` | lossless air layer (cavity, gap) |
 ///
-/// `multipole(G_inf=…, A_1=…, lambda_1=…, B_1=…, C_1=…, alpha_1=…, beta_1=…)` takes the contract's
+/// `multipole(G_inf=…, A_1=…, lambda_1=…, B_1=…, C_1=…, alpha_1=…, beta_1=…)` takes fit.json's
 /// parameter names (s⁻¹); the order follows from the names given. `fit(file=PATH[, order=QxSy]
 /// [, estimate=mean|max_likelihood])` reads PATH (a fit.json; the selected order and the posterior
 /// mean by default). Neither can be combined with layers.

@@ -2,7 +2,7 @@
 /// @file
 /// Maa's micro-perforated panel (MPP): the series impedance of a thin panel with sub-millimetre holes,
 /// placed in a transfer-matrix stack in front of an air cavity (Maa, "Potential of microperforated
-/// panel absorber", JASA 104(5) 2861-2866, 1998; materials.md §2.4). e^{+jωt}, normalised by ρ0c0:
+/// panel absorber", JASA 104(5) 2861-2866, 1998; docs/materials.md §2.4). e^{+jωt}, normalised by ρ0c0:
 ///
 ///   k  = d √(ωρ0/(4η))                                   perforate constant (d = hole diameter)
 ///   r  = (32 η t/(p ρ0 c0 d²)) [√(1 + k²/32) + (√2/32) k d/t]

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// A surface given directly by a multipole admittance (method.md eq. 2), from explicit parameters or
+/// A surface given directly by a multipole admittance (docs/method.md, paper eq. 2), from explicit parameters or
 /// from a `fit.json` written by `admitgen fit`. Evaluated by model/multipole.hpp; the packing of θ is
 /// the one of model/order.hpp.
 #pragma once
@@ -28,10 +28,10 @@ enum class Causality { required, reported };
 
 /// What makes `surface` non-causal or marginally stable, one entry per pole (λ_q ≤ 0 or α_s ≤ 0, NaN
 /// included), naming the parameter and its value; empty when every pole is in the open left half-plane
-/// (physics.md §2.1). The causality check and the readers' refusals share these words.
+/// (docs/physics.md §2.1). The causality check and the readers' refusals share these words.
 std::vector<std::string> causality_violations(const MultipoleSurface& surface);
 
-/// Builds θ from contract names (G_inf, A_q, lambda_q, B_s, C_s, alpha_s, beta_s). The order is the
+/// Builds θ from fit.json names (G_inf, A_q, lambda_q, B_s, C_s, alpha_s, beta_s). The order is the
 /// one the names imply (Q = number of A_q, S = number of B_s); every parameter of that order must be
 /// present and finite. Throws InputError naming the missing, surplus or non-finite name, or (when
 /// causality is required) the first causality violation; `context` prefixes messages.

@@ -27,8 +27,8 @@ Eigen::ArrayXd heteroscedastic_std(double sigma, double scale, const Air& air, d
   for (Eigen::Index i = 0; i < std.size(); ++i)
     if (!std::isfinite(std[i]))
       throw InputError(fmt::format("heteroscedastic_noise: {} Hz sits where sin(ks) = 0 (s = {} m): the two-microphone "
-                                   "method cannot measure there; change --band or --mic-spacing",
-                                   f_hz[i], spacing_m));
+                                   "method cannot measure there; change {} or {}",
+                                   f_hz[i], spacing_m, setting("band"), setting("tube.spacing_m")));
   return std;
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Measurement noise for synthetic data (contract.md): complex Gaussian of std σ, E|n|² = σ², i.e.
+/// Measurement noise for synthetic data (docs/cli.md): complex Gaussian of std σ, E|n|² = σ², i.e.
 /// σ²/2 on each of Re and Im, either the same at every frequency or heteroscedastic the way the
-/// two-microphone method amplifies noise (physics.md §5.1 l):
+/// two-microphone method amplifies noise (docs/physics.md §5.1 l):
 ///   σ_i = σ √(1 + (scale/|sin k s|)²),  k = ω/c0, s the microphone spacing.
 /// Draws come from core/rng.hpp's Rng (Box-Muller), Re then Im, point by point in the order given,
 /// so a seed fixes every bit of the result.

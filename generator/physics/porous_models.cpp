@@ -48,7 +48,7 @@ Propagation evaluate(const Miki& m, const Air& air, const Eigen::ArrayXd& f) {
   return p;
 }
 
-/// Johnson-Champoux-Allard, e^{+jωt} (materials.md §2.2):
+/// Johnson-Champoux-Allard, e^{+jωt} (docs/materials.md §2.2):
 ///   ρ_eq = (α∞ρ0/φ) [1 + (σφ/(jωρ0α∞)) √(1 + j 4α∞² η ρ0 ω/(σ² Λ² φ²))]
 ///   K_eq = (γP0/φ) / [γ − (γ−1) (1 + (8η/(jω Pr Λ'² ρ0)) √(1 + jωρ0 Pr Λ'²/(16η)))^−1]
 Propagation evaluate(const JohnsonChampouxAllard& m, const Air& air, const Eigen::ArrayXd& f) {

@@ -2,7 +2,7 @@
 /// @file
 /// Rigid-frame porous media as equivalent fluids: the characteristic impedance Z_c and complex
 /// wavenumber k_c of a porous layer, in the e^{+jωt} convention (k_c = k' − jk'', k'' > 0: waves
-/// decay as they travel). Four models, each exactly as transcribed in materials.md §2 with its source:
+/// decay as they travel). Four models, each as stated in docs/materials.md §2 with its source:
 ///
 ///   Delany & Bazley 1970 (empirical, X = ρ0 f/σ, valid 0.01 < X < 1)
 ///   Miki 1990 (empirical, X = f/σ; positive-real, unlike Delany-Bazley at low X)
@@ -54,7 +54,7 @@ Propagation propagation(const PorousModel& model, const Air& air, const Eigen::A
 /// Propagation in air itself (lossless): Z_c = ρ0c0, k = ω/c0.
 Propagation air_propagation(const Air& air, const Eigen::ArrayXd& f_hz);
 
-/// The Johnson-Champoux-Allard quantities implied by Horoshenkov's three parameters (materials.md
+/// The Johnson-Champoux-Allard quantities implied by Horoshenkov's three parameters (docs/materials.md
 /// §2.3, eqs. 12 and 15 and the JCAL equivalents): α∞ = e^{4ξ}, σ = 8ηα∞ e^{6ξ}/(s̄²φ),
 /// Λ = s̄ e^{−5ξ/2}, Λ' = s̄ e^{3ξ/2}, with ξ = (σ_s ln 2)².
 struct HoroshenkovDerived {

@@ -78,20 +78,20 @@ ChainPlan chain_plan(const std::vector<Effect>& effects) {
 
 TubeGeometry TubeSetup::geometry(const std::string& why) const {
   std::vector<std::string> missing;
-  if (!diameter_m) missing.emplace_back("--tube-diameter");
-  if (!spacing_m) missing.emplace_back("--mic-spacing");
-  if (!mic1_distance_m) missing.emplace_back("--mic-distance");
+  if (!diameter_m) missing.push_back(setting("tube.diameter_m"));
+  if (!spacing_m) missing.push_back(setting("tube.spacing_m"));
+  if (!mic1_distance_m) missing.push_back(setting("tube.mic1_distance_m"));
   if (!missing.empty())
-    throw InputError(fmt::format("{} needs the tube geometry --tube-diameter, --mic-spacing and --mic-distance "
-                                 "(metres); missing: {}",
-                                 why, fmt::join(missing, ", ")));
+    throw InputError(fmt::format("{} needs the tube geometry {}, {} and {} (metres); missing: {}", why,
+                                 setting("tube.diameter_m"), setting("tube.spacing_m"),
+                                 setting("tube.mic1_distance_m"), fmt::join(missing, ", ")));
   return TubeGeometry(*diameter_m, *spacing_m, *mic1_distance_m);
 }
 
 Eigen::ArrayXd log_spaced_frequencies(double lo_hz, double hi_hz, int n) {
   if (!(lo_hz > 0.0 && hi_hz > lo_hz && std::isfinite(hi_hz)))
     throw InputError(fmt::format("frequency band {}:{} Hz: need 0 < FMIN < FMAX", lo_hz, hi_hz));
-  if (n < 2) throw InputError(fmt::format("--points {}: need at least 2 frequencies", n));
+  if (n < 2) throw InputError(fmt::format("{} {}: need at least 2 frequencies", setting("points"), n));
   Eigen::ArrayXd f(n);
   for (int i = 0; i < n; ++i) f[i] = lo_hz * std::pow(hi_hz / lo_hz, static_cast<double>(i) / (n - 1));
   f[n - 1] = hi_hz;
@@ -101,7 +101,7 @@ Eigen::ArrayXd log_spaced_frequencies(double lo_hz, double hi_hz, int n) {
 void validate(const SynthesisRequest& r) {
   ADMITGEN_ENSURE(r.f_hz.size() > 0 && (r.f_hz > 0.0).all(), "synthesis needs positive frequencies");
   if (!(std::isfinite(r.noise_std) && r.noise_std >= 0.0))
-    throw InputError(fmt::format("--noise {}: the noise std must be >= 0", r.noise_std));
+    throw InputError(fmt::format("{} {}: the noise std must be >= 0", setting("noise_std"), r.noise_std));
   std::set<std::string> seen;
   for (const auto& effect : r.effects) {
     const std::string name = effect_name(effect);
@@ -110,7 +110,7 @@ void validate(const SynthesisRequest& r) {
     switch (geometry_need(effect)) {
       case GeometryNeed::full: (void)r.tube.geometry(why); break;
       case GeometryNeed::diameter:
-        if (!r.tube.diameter_m) throw InputError(fmt::format("{} needs --tube-diameter (metres)", why));
+        if (!r.tube.diameter_m) throw InputError(fmt::format("{} needs {} (metres)", why, setting("tube.diameter_m")));
         break;
       case GeometryNeed::none: break;
     }
@@ -118,7 +118,7 @@ void validate(const SynthesisRequest& r) {
       throw InputError("effect 'air_gap' needs a layered material SPEC (an air layer is inserted before the rigid "
                        "backing); a multipole surface has no layers");
     if (std::holds_alternative<HeteroscedasticNoise>(effect) && !(r.noise_std > 0.0))
-      throw InputError("effect 'heteroscedastic_noise' shapes the noise: give --noise STD > 0");
+      throw InputError("effect 'heteroscedastic_noise' shapes the noise: give " + setting("noise_std") + " STD > 0");
   }
 }
 

@@ -16,16 +16,16 @@ constexpr cd kJ{0.0, 1.0};
 
 TubeGeometry::TubeGeometry(double diameter_m, double spacing_m, double mic1_distance_m)
     : d_(diameter_m), s_(spacing_m), x1_(mic1_distance_m) {
-  const auto check = [](double v, const char* option) {
+  const auto check = [](double v, const std::string& option) {
     if (!(std::isfinite(v) && v > 0.0)) throw InputError(fmt::format("{} must be a positive length in metres (got {})", option, v));
   };
-  check(d_, "--tube-diameter");
-  check(s_, "--mic-spacing");
-  check(x1_, "--mic-distance");
+  check(d_, setting("tube.diameter_m"));
+  check(s_, setting("tube.spacing_m"));
+  check(x1_, setting("tube.mic1_distance_m"));
   if (!(s_ < x1_))
-    throw InputError(fmt::format("--mic-spacing {} m must be less than --mic-distance {} m (x1 is the sample to the "
-                                 "farther microphone, so the near one sits at x1 - s > 0)",
-                                 s_, x1_));
+    throw InputError(fmt::format("{} {} m must be less than {} {} m (x1 is the sample to the farther microphone, "
+                                 "so the near one sits at x1 - s > 0)",
+                                 setting("tube.spacing_m"), s_, setting("tube.mic1_distance_m"), x1_));
 }
 
 Eigen::ArrayXcd reflection_from_admittance(const Eigen::ArrayXcd& y) { return (1.0 - y) / (1.0 + y); }

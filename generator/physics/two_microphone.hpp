@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// The ISO 10534-2 two-microphone transfer-function method, both ways, in the e^{+jωt} convention of
-/// contract.md. x is the distance from the sample face; mic 1 (far) at x1, mic 2 (near) at x2 = x1 − s:
+/// docs/cli.md ("Effects"). x is the distance from the sample face; mic 1 (far) at x1, mic 2 (near) at x2 = x1 − s:
 ///
 ///   p(x) = e^{jkx} + R e^{−jkx},   H12 = p(x2)/p(x1)                      (forward: what the mics see)
 ///   R = e^{2jkx1} (H12 − e^{−jks})/(e^{jks} − H12)                         (processing: ISO eq. 17)
 ///
 /// The processing inverts the forward model exactly when both use the same k, x1 and s; a measurement
 /// effect is a true chain (k, positions, mic gains) that differs from the one processing assumes
-/// (contract.md "Effects"). The inversion is singular where sin ks = 0 (H_I = H_R), i.e. at
+/// (docs/cli.md "Effects"). The inversion is singular where sin ks = 0 (H_I = H_R), i.e. at
 /// f = n c/(2s); ISO's working range keeps 0.05 c/s < f < min(0.45 c/s, 0.586 c/d).
 #pragma once
 
@@ -47,7 +47,7 @@ Eigen::ArrayXcd reflection_from_transfer(const Eigen::ArrayXcd& h12, const Eigen
 /// Lossless wavenumber ω/c0 at f_hz, as processing assumes it.
 Eigen::ArrayXcd lossless_wavenumber(const Air& air, const Eigen::ArrayXd& f_hz);
 
-/// Wavenumber with the tube-wall attenuation of ISO 10534-2 as contract.md writes it:
+/// Wavenumber with the tube-wall attenuation of ISO 10534-2 as docs/cli.md writes it:
 ///   k = ω/c0 + (1 − j)·0.0194·√f/(c0·d).
 Eigen::ArrayXcd lossy_wavenumber(const Air& air, const Eigen::ArrayXd& f_hz, double diameter_m);
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "selection/fit.hpp"
 
-#include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -25,7 +25,7 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 SamplerKind parse_sampler_kind(const std::string& text) {
   if (text == "poles") return SamplerKind::poles;
   if (text == "full") return SamplerKind::full;
-  throw InputError(fmt::format("--sampler '{}': expected full (default) or poles", text));
+  throw InputError(fmt::format("{} '{}': expected full (default) or poles", setting("sampler_kind"), text));
 }
 
 namespace {
@@ -42,7 +42,7 @@ ModelResult run_full(const Measurement& data, const Order& order, const FitSetti
   const PriorTransform transform(order, settings.priors, settings.reduce_symmetry);
   const Likelihood likelihood(data, order, settings.data_count);
   const auto log_likelihood = [&](const double* th) {
-    if (settings.passive && !checks::is_passive(order, th)) return -std::numeric_limits<double>::infinity();
+    if (settings.passive && !is_passive(order, th)) return -std::numeric_limits<double>::infinity();
     return likelihood(th);
   };
   const NestedSettings sampler = order_sampler_settings(order, settings, round);
@@ -176,8 +176,8 @@ void check_constrainable(const Measurement& data, const FitSettings& settings) {
   const int k = real_data_count(settings.data_count, data.size());
   if (k < largest.dim() + 2)
     throw InputError(fmt::format("{} has {} parameters but the data hold only K = {} real values; lower "
-                                 "--qmax/--smax or supply more frequency points",
-                                 largest.name(), largest.dim(), k));
+                                 "{}/{} or supply more frequency points",
+                                 largest.name(), largest.dim(), k, setting("qmax"), setting("smax")));
 }
 
 }  // namespace

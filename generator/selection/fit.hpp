@@ -43,7 +43,7 @@ struct FitSettings {
   /// the previous round (a narrow mode with prior-volume fraction f at the contour where it starts to
   /// dominate is found only if n·f ≳ 1, Skilling 2006 §8).
   int missed_mode_retries = 2;
-  /// Truncate the prior to passive models (Re G(jω) ≥ 0 ∀ω, checks/passivity.hpp): ln L = −∞ outside, so
+  /// Truncate the prior to passive models (Re G(jω) ≥ 0 ∀ω, model/passivity.hpp): ln L = −∞ outside, so
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;

@@ -8,8 +8,6 @@
 
 namespace admitgen {
 
-double deciban(double log_z_i, double log_z_j) { return 10.0 * (log_z_i - log_z_j) / std::log(10.0); }
-
 SelectionRule SelectionRule::parse(const std::string& text) {
   if (text == "best") return best();
   const std::string prefix = "cheapest:";
@@ -17,8 +15,8 @@ SelectionRule SelectionRule::parse(const std::string& text) {
     const auto db = parse_double(text.substr(prefix.size()));
     if (db && std::isfinite(*db) && *db >= 0.0) return SelectionRule(true, *db);
   }
-  throw InputError(fmt::format("--select '{}': expected 'best' or 'cheapest:DB' with a margin DB >= 0 in deciban "
-                               "(e.g. cheapest:10)", text));
+  throw InputError(fmt::format("{} '{}': expected 'best' or 'cheapest:DB' with a margin DB >= 0 in deciban "
+                               "(e.g. cheapest:10)", setting("rule"), text));
 }
 
 std::size_t SelectionRule::select(const std::vector<double>& log_z, const std::vector<int>& buffers) const {

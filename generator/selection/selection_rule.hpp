@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// How an order is chosen from the evidence grid (method.md, "Model selection"):
+/// How an order is chosen from the evidence grid (docs/method.md, "Model selection"):
 ///   best         the highest ln Z;
 ///   cheapest:DB  the fewest state buffers (Q + 2S) among orders within DB deciban of the best
 ///                (ties broken by higher evidence) — the paper's argument for Q1S1 over Q0S2.
 #pragma once
+
+#include "inference/evidence.hpp"  // deciban: the unit of the cheapest:DB margin
 
 #include <string>
 #include <vector>
@@ -28,8 +30,5 @@ class SelectionRule {
   bool cheapest_;
   double margin_db_;
 };
-
-/// Bayes factor in deciban: 10 log10(Z_i / Z_j) = 10 (ln Z_i − ln Z_j)/ln 10.
-double deciban(double log_z_i, double log_z_j);
 
 }  // namespace admitgen

@@ -2,7 +2,7 @@
 /*
  * tube_fdtd.c - 1D tube FDTD with an admitgen boundary filter (runtime f32, implicit history/commit
  * coupling): bounded energy with a passive filter, growth with a deliberately non-passive one
- * (physics.md §2.4: a mode decays at sigma = (c/L) Re beta_n(omega_n), grows where Re beta_n < 0).
+ * (docs/physics.md §2.4: a mode decays at sigma = (c/L) Re beta_n(omega_n), grows where Re beta_n < 0).
  *
  * Staggered leapfrog, pressure p at nodes x_i = i dx (i = 0..N), velocity v at x_{i+1/2}; rigid end at
  * x = 0 (v_{-1/2} = -v_{1/2} mirrored, i.e. a half cell with zero flux), admittance wall at x = L:

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // --passive: the prior truncated to passive models (selection/fit.cpp, inference/nested_sampler.cpp).
-#include "checks/passivity.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/nested_sampler.hpp"
+#include "model/passivity.hpp"
 #include "selection/fit.hpp"
 #include "test_support.hpp"
 
@@ -48,7 +48,7 @@ TEST_CASE("fit --passive: every posterior sample is passive, evidence under the 
   CHECK(m.run.log_support_fraction > std::log(1.0 / 10000.0));
   std::size_t checked = 0;
   for (std::size_t i = 0; i < m.run.size(); ++i) {
-    CHECK(checks::is_passive(order, m.run.point(i)));
+    CHECK(is_passive(order, m.run.point(i)));
     ++checked;
   }
   CHECK(checked == m.run.size());

@@ -3,6 +3,7 @@
 #include "checks/passivity.hpp"
 #include "core/rng.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 
 #include <doctest/doctest.h>
 
@@ -121,7 +122,7 @@ TEST_CASE("passivity edge cases: G_inf = 0 (reciprocal realisation), G_inf < 0, 
   CHECK(p.bands[0].lo == doctest::Approx(std::sqrt(2000.0 * 2000.0 / 0.1 - 4e6) / (2 * kPi)).epsilon(1e-9));
   CHECK(std::isinf(p.bands[0].hi));
   CHECK_FALSE(is_passive(q1, th.data()));
-  // physics.md §2.2: a pair violating |C| beta <= B alpha can still be passive overall (decided exactly).
+  // docs/physics.md §2.2: a pair violating |C| beta <= B alpha can still be passive overall (decided exactly).
   const Order s1(0, 1);
   Eigen::VectorXd ts(s1.dim());
   ts << 0.5, 100.0, 120.0, 1000.0, 6000.0;  // |C| beta = 7.2e5 > B alpha = 1e5

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Issue 4, show-it 3: every filter the suite emits from a fit of real data passes `admitgen check`.
+// Every filter the suite emits from a fit of real data passes `admitgen check`.
 // The fit is committed (samples/fits/basotect_round_10cm_passive, made by
 //   admitgen fit samples/basotect_tuberlin/round_10cm.csv --columns f,_,_,_,_,re,im,_ --qmax 1 --smax 3
 //            --live 100 --passive --out samples/fits/basotect_round_10cm_passive

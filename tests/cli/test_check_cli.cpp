@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `admitgen check` and the emit refusal, end to end (exit codes of contract.md).
+// `admitgen check` and the emit refusal, end to end (exit codes of docs/cli.md).
 #include "test_support.hpp"
 
 #include <nlohmann/json.hpp>

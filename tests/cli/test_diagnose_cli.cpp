@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `admitgen diagnose` end to end: the verdict on a synthetic frame resonance, byte-identical reruns,
-// exit code 1 when the verdict names an effect and 0 when it is `none` (contract.md: 1 = a diagnosis
+// exit code 1 when the verdict names an effect and 0 when it is `none` (docs/cli.md: 1 = a diagnosis
 // found a violation), exit code 2 and no output on bad input.
 #include "test_support.hpp"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The `fit` command end to end: bad inputs (test 6 of the foundations issue), determinism across
+// The `fit` command end to end: bad inputs (docs/cli.md exit codes), determinism across
 // thread counts, and quiet output when stderr is not a terminal.
 #include "test_support.hpp"
 

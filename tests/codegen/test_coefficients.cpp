@@ -35,7 +35,7 @@ TEST_CASE("per-term exponents keep eps = 1 − e^{−λT} at full relative preci
     const double lsb = std::ldexp(1.0, -q.bits);
     for (std::size_t i = 0; i < m.real.size(); ++i)  // rounding a normalised mantissa: ≤ 2^-B relative
       CHECK(std::abs(d.real[i].eps - m.real[i].eps) <= lsb * m.real[i].eps);
-    // physics.md §3.2: a plain Q15 pole a = e^{−λT} for a 2 Hz pole at 48 kHz is off by 4.9 % in λ;
+    // docs/physics.md §3.2: a plain Q15 pole a = e^{−λT} for a 2 Hz pole at 48 kHz is off by 4.9 % in λ;
     // the delta form with its own exponent: ≤ 2^-15 relative.
     CHECK(std::abs(d.real[0].lambda / m.real[0].lambda - 1.0) <= 2.0 * lsb);
   }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Discretisation (codegen/discrete_model.hpp): PLRC baseline against physics.md §1.3, the refit, folding,
+// Discretisation (codegen/discrete_model.hpp): PLRC baseline against docs/physics.md §1.3, the refit, folding,
 // the realisation's internal consistency.
 #include "codegen/discrete_model.hpp"
 #include "core/errors.hpp"
@@ -29,7 +29,7 @@ MultipoleSurface reference_fit(std::vector<double>& f) {
 
 }  // namespace
 
-TEST_CASE("PLRC baseline reproduces the physics.md §1.3 error table for one real pole") {
+TEST_CASE("PLRC baseline reproduces the docs/physics.md §1.3 error table for one real pole") {
   // λ = 2π·500 Hz, fs = 48 kHz: PLRC relative error 3.3e-4 at 0.01 fs, 3.3e-2 at 0.1 fs (table, [verified]).
   const Order order(1, 0);
   Eigen::VectorXd theta(3);

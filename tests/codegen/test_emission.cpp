@@ -36,7 +36,7 @@ TEST_CASE("template language: substitution, loops with scope, errors for unknown
 TEST_CASE("band absorption: normal-incidence and London/Kuttruff limits") {
   CHECK(alpha_normal({1.0, 0.0}) == doctest::Approx(1.0));  // matched: R = 0
   CHECK(alpha_normal({0.0, 0.3}) == doctest::Approx(0.0).epsilon(1e-12));  // purely reactive
-  // physics.md §4: maximum random-incidence absorption 0.9512 at ζ = 1.567 (real)
+  // docs/physics.md §4.2: maximum random-incidence absorption 0.9512 at ζ = 1.567 (real)
   CHECK(alpha_random({1.0 / 1.567, 0.0}) == doctest::Approx(0.9512).epsilon(2e-4));
 }
 

@@ -31,7 +31,7 @@ struct Export {
 
 /// The reference: the Q1S1 truth of samples/reference (Ginf 0.469, A1 −26062, λ1 55250, B1 2019,
 /// C1 −263, α1 1530, β1 10063; e^{+jωt}, normalised) at 41 log-spaced frequencies 100–4000 Hz, the
-/// row count of the Basotect re-export.
+/// row count of a Basotect re-export.
 struct Reference {
   Eigen::ArrayXd f;
   Eigen::ArrayXcd y;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Reading measured data (contract.md "Input data"): formats, conversions, band selection.
+// Reading measured data (docs/reading-data.md): formats, conversions, band selection.
 #include "core/errors.hpp"
 #include "data/csv_reader.hpp"
 #include "test_support.hpp"

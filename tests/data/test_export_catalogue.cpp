@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The export catalogue (tests/data/export_catalogue.hpp) read in-process: every entry reads to the
-// reference admittance of the plain file, or fails with its documented message.
+// reference admittance of the plain file, or fails with its documented message (as the CLI prints it:
+// the settings the library names spelled as flags).
+#include "cli/options.hpp"
 #include "core/errors.hpp"
 #include "data/csv_reader.hpp"
 #include "data/export_catalogue.hpp"
@@ -72,7 +74,7 @@ TEST_CASE("export catalogue: every realistic export reads to the reference admit
       try {
         read_measurement(path, e.options);
       } catch (const InputError& error) {
-        message = error.what();
+        message = error.spelled(cli::flag_for);
       }
       INFO(message);
       CHECK(message.find(e.error) != std::string::npos);

@@ -4,7 +4,7 @@
 // size is identified (top-1 verdict) for each of three noise seeds. Several minutes of sampling, so it
 // is skipped unless asked for:
 //   admitgen_tests -tc='detection limits*' --no-skip
-// Its output is the detection-limit table of samples/diagnosis/README_SECTION.md.
+// Its output is the detection-limit table of docs/diagnosis.md.
 #include "validation_cases.hpp"
 
 #include <doctest/doctest.h>

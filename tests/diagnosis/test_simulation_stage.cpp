@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The simulation stage (issue 6): a 1D FDTD impedance tube terminated by the C runtime, measured with
+// The simulation stage (docs/diagnosis.md): a 1D FDTD impedance tube terminated by the C runtime, measured with
 // two virtual microphones and the ISO 10534-2 processing (simulation/impedance_tube_fdtd.hpp).
 #include "codegen/coefficients.hpp"
 #include "codegen/emission.hpp"

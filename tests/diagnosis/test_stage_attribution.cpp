@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Stage attribution (issue 6, "Show it" 2): a deliberately coarse setup is blamed on the right stage,
+// Stage attribution (docs/diagnosis.md): a deliberately coarse setup is blamed on the right stage,
 // and a good setup shows every downstream stage negligible next to the fit.
 #include "core/errors.hpp"
 #include "diagnosis/stage_attribution.hpp"
@@ -22,7 +22,7 @@ nlohmann::json reference_fit() {
 }
 
 /// The reference fit with its real pole moved to 2 Hz (λ = 12.566 1/s, A = 100 1/s) and the data band
-/// narrowed to 100-2000 Hz: the slow pole is the hard case of fixed point (physics.md §3.2).
+/// narrowed to 100-2000 Hz: the slow pole is the hard case of fixed point (docs/physics.md §3.2).
 nlohmann::json slow_pole_fit() {
   nlohmann::json fit = reference_fit();
   for (auto& p : fit["parameters"]) {

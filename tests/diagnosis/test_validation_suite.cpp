@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The diagnosis validation suite (issue 6, "Show it" 1): generated cases of every contract effect at a
+// The diagnosis validation suite (docs/diagnosis.md): generated cases of every documented effect at a
 // clear and a marginal size on three base materials, plus clean controls; `diagnose` is never told the
 // effect. Prints the confusion matrix; asserts top-1 accuracy ≥ 90 % on the clear sizes, `none` on
 // ≥ 90 % of the controls, the signature frequency inside the worst band, and shrink ≥ 3× overall and
@@ -18,7 +18,7 @@ namespace {
 
 /// The effect of each case at a clear and at a marginal size (synth --effect text). Sizes are chosen
 /// against σ = 0.003: "clear" leaves the effect's gap several times the noise, "marginal" near the
-/// detection limit (README table).
+/// detection limit (docs/diagnosis.md table).
 struct EffectSizes {
   std::string name;
   std::string clear;
@@ -62,7 +62,7 @@ std::vector<ValidationCase> validation_cases() {
           c.mic_distance_m = 0.3;
         }
         if (e.name == "frame_resonance") c.signature_hz = f0[k];
-        // The slit's quarter-wave resonance c0/4h (physics.md §5.1 f), where it lies inside the band.
+        // The slit's quarter-wave resonance c0/4h (docs/physics.md §5.1 f), where it lies inside the band.
         if (e.name == "edge_gap" && 343.2 / (4 * m.thickness_m) < 2000.0) c.signature_hz = 343.2 / (4 * m.thickness_m);
         c.label = fmt::format("{} {} {}", m.name, clear ? "clear" : "marginal", c.effect);
         cases.push_back(c);

@@ -5,9 +5,9 @@
 /// (what `admitgen synth` does) and diagnoses it against the clean base material SPEC, without telling
 /// `diagnose` the effect.
 ///
-/// Setup (physics.md §5.0 reference tube): d = 100 mm, s = 50 mm, x1 = 100 mm, 20 °C; 120 log-spaced
+/// Setup (docs/physics.md §5.0 reference tube): d = 100 mm, s = 50 mm, x1 = 100 mm, 20 °C; 120 log-spaced
 /// points 100-2000 Hz (14 one-third-octave bands); complex noise σ = 0.003 on y (E|n|² = σ²), about
-/// the random error of a tube measurement with coherence γ² ≈ 0.99 in mid band (physics.md §5.1 l).
+/// the random error of a tube measurement with coherence γ² ≈ 0.99 in mid band (docs/physics.md §5.1 l).
 /// 60 live points per effect: effects have 0-3 parameters, the evidence error √(H/n) ≈ 0.5 nat (2 dB)
 /// is small next to the 20 dB decision threshold, and one case takes about a second.
 #pragma once
@@ -39,7 +39,7 @@ inline const std::vector<BaseMaterial>& base_materials() {
 
 struct ValidationCase {
   std::string label;        ///< e.g. "porous frame_resonance clear"
-  std::string truth;        ///< the effect's contract name, or "none"
+  std::string truth;        ///< the effect's documented name, or "none"
   std::string effect;       ///< synth --effect text ("" for a control)
   BaseMaterial material;
   double tube_diameter_m = 0.1;

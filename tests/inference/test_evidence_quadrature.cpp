@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Test 1 of the foundations issue: nested-sampling ln Z against an independent deterministic
+// Evidence against quadrature: nested-sampling ln Z against an independent deterministic
 // quadrature of ∫ L π dθ, for Q0S0 (1-D) and Q1S0 (3-D) with priors narrowed so the tensor
 // Gauss-Legendre rule is cheap and converged.
 #include "inference/likelihood.hpp"

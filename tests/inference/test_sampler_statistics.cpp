@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Tests 2 and 3 of the foundations issue, in the doctest suite "statistical" (many sampler runs;
+// Sampler statistics (docs/validation.md), in the doctest suite "statistical" (many sampler runs;
 // left out of the sanitizer job). Sizes and seeds are chosen so each case is decisive and takes a
 // few seconds.
 #include "data/csv_reader.hpp"

@@ -14,7 +14,7 @@ using namespace admitgen;
 
 namespace {
 
-/// physics.md: one pair as a real second-order section (2Bs + 2(Bα + Cβ))/(s² + 2αs + α² + β²).
+/// docs/physics.md §1.1: one pair as a real second-order section (2Bs + 2(Bα + Cβ))/(s² + 2αs + α² + β²).
 std::complex<double> pair_as_sos(double b, double c, double al, double be, double w) {
   const std::complex<double> s(0.0, w);
   return (2.0 * b * s + 2.0 * (b * al + c * be)) / (s * s + 2.0 * al * s + al * al + be * be);

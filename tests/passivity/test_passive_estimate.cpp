@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Passivity by construction (docs/passivity.md): the continuous passive refit and the passive estimate.
-// References: the exact Hamiltonian test (checks/passivity.hpp) certifies; the change reported is recomputed
+// References: the exact Hamiltonian test (model/passivity.hpp) certifies; the change reported is recomputed
 // here from the two models; the residual of the passive estimate is compared with the unconstrained best.
-#include "checks/passivity.hpp"
 #include "core/rng.hpp"
 #include "data/csv_reader.hpp"
 #include "emit/emit.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 #include "output/fit_reader.hpp"
 #include "passivity/passive_estimate.hpp"
 #include "passivity/passive_residues.hpp"
@@ -37,7 +37,7 @@ TEST_CASE("passive residues: a model negative only far below the data band is re
   Eigen::VectorXd th(order.dim());
   const double lam = kTwoPi * 20.0, g_inf = 0.5;
   th << g_inf, -1.6 * lam * g_inf, lam;
-  const auto before = checks::continuous_passivity(order, th.data());
+  const auto before = continuous_passivity(order, th.data());
   REQUIRE_FALSE(before.passive);
   REQUIRE(before.bands.size() == 1);
   CHECK(before.bands[0].hi < 100.0);
@@ -47,7 +47,7 @@ TEST_CASE("passive residues: a model negative only far below the data band is re
   source.estimate = Estimate::mean;
   for (int i = 0; i < 100; ++i) source.data_f_hz.push_back(100.0 * std::pow(40.0, i / 99.0));
   emit::enforce_continuous_passivity(source);
-  CHECK(checks::continuous_passivity(order, source.surface.theta.data()).passive);
+  CHECK(continuous_passivity(order, source.surface.theta.data()).passive);
   REQUIRE(source.notes.size() == 1);
   CHECK(source.notes[0].find("passivity enforced") != std::string::npos);
   CHECK(source.enforcement.at("certified").get<bool>());
@@ -66,8 +66,8 @@ TEST_CASE("passive residues: a model negative only far below the data band is re
   Eigen::VectorXd raise = th, shrink = th;
   raise[0] = 1.6 * g_inf;
   shrink[1] = -lam * g_inf;
-  REQUIRE(checks::continuous_passivity(order, raise.data()).passive);
-  REQUIRE(checks::continuous_passivity(order, shrink.data()).passive);
+  REQUIRE(continuous_passivity(order, raise.data()).passive);
+  REQUIRE(continuous_passivity(order, shrink.data()).passive);
   // (The optimum here is the second repair itself, up to the 1e-9 margin: equality within 1e-6 is allowed.)
   CHECK(rms_change(source.surface.theta) < rms_change(raise));
   CHECK(rms_change(source.surface.theta) <= rms_change(shrink) * (1.0 + 1e-6));
@@ -80,7 +80,7 @@ TEST_CASE("passive residues: already-passive target is reproduced (constraints i
   const auto fit = read_fit_file(test::sample("fits/q1s1_reference.json"));
   const Order order(1, 1);
   const Eigen::VectorXd th = theta_of(fit, "Q1S1", Estimate::mean);
-  REQUIRE(checks::continuous_passivity(order, th.data()).passive);
+  REQUIRE(continuous_passivity(order, th.data()).passive);
   Eigen::ArrayXd w(50);
   for (int i = 0; i < 50; ++i) w[i] = kTwoPi * 100.0 * std::pow(40.0, i / 49.0);
   const Eigen::ArrayXcd g = evaluate_multipole(order, th, w);
@@ -106,7 +106,7 @@ TEST_CASE("passive estimate: on passive-truth data its residual is within 5 % of
     CAPTURE(name);
     REQUIRE(e.best_sample_relative_rms_residual < 0.05);
     CHECK(e.certified);
-    CHECK(checks::continuous_passivity(order, e.theta.data()).passive);
+    CHECK(continuous_passivity(order, e.theta.data()).passive);
     CHECK(e.relative_rms_residual <= 1.05 * e.best_sample_relative_rms_residual);
     refitted += e.changed;
     MESSAGE(name << ": rms " << e.relative_rms_residual << " vs best sample " << e.best_sample_relative_rms_residual
@@ -140,7 +140,7 @@ TEST_CASE("passive estimate: near-rigid data with Re y < 0 at many points still 
   const auto e = passivity::passive_estimate(data, order, {th}, DataCount::two_per_point);
   CHECK(e.changed);
   CHECK(e.certified);
-  CHECK(checks::continuous_passivity(order, e.theta.data()).passive);
+  CHECK(continuous_passivity(order, e.theta.data()).passive);
 }
 
 TEST_CASE("near-rigid data, Re y < 0 at many points: fit warns, emit writes a certified passive filter") {

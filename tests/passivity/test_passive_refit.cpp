@@ -35,7 +35,7 @@ TEST_CASE("passive refit: refits that go negative near Nyquist are constrained a
                            "synthetic/mpp_three_layer_fit/fit.json", "fits/basotect_round_10cm_passive/fit.json"}) {
     const auto fit = read_fit_file(test::sample(file));
     const auto surface = multipole_from_fit(fit, "", Estimate::mean, file);
-    if (!checks::continuous_passivity(surface.order, surface.theta.data()).passive) continue;
+    if (!continuous_passivity(surface.order, surface.theta.data()).passive) continue;
     const auto f = log_grid(fit["input"]["f_min_hz"].get<double>(), fit["input"]["f_max_hz"].get<double>(), 200);
     for (double fs : {16000.0, 24000.0, 44100.0, 48000.0}) {
       if (f.back() >= 0.45 * fs) continue;

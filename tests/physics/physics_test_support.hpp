@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// Shared fixtures of the physics tests: the air constants materials.md used for its derived numbers,
+/// Shared fixtures of the physics tests: the air constants docs/materials.md uses for its derived numbers,
 /// and small helpers on spectra.
 #pragma once
 
@@ -16,7 +16,7 @@
 
 namespace admitgen::test {
 
-/// materials.md §2: "ρ0 = 1.213 kg/m³, c0 = 343 m/s, η = 1.839e-5 Pa·s, Pr = 0.71, γ = 1.4, P0 = 101325 Pa".
+/// docs/materials.md §1: "ρ0 = 1.213 kg/m³, c0 = 343 m/s, η = 1.839e-5 Pa·s, Pr = 0.71, γ = 1.4, P0 = 101325 Pa".
 inline Air materials_md_air() { return Air{20.0, 1.213, 343.0, 1.839e-5, 0.71, 1.4, 101325.0}; }
 
 /// One frequency as a grid.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Effects of contract.md: parsing by contract name and parameters, and the sample effects' closed forms
-// (frame_resonance, fractional_order, edge_gap, air_gap) against exact values and physics.md §5.1 sizes.
+// Effects of docs/cli.md: parsing by documented name and parameters, and the sample effects' closed forms
+// (frame_resonance, fractional_order, edge_gap, air_gap) against exact values and docs/physics.md §5.1 sizes.
 #include "core/errors.hpp"
 #include "physics/effects.hpp"
 #include "physics/synthetic_measurement.hpp"
@@ -96,8 +96,8 @@ TEST_CASE("edge_gap: slit admittance limits and epsilon") {
   }
 }
 
-TEST_CASE("sample effect sizes of physics.md 5.1 for the reference case (Miki 10 kPa s/m2, 50 mm, d = 100 mm)") {
-  // physics.md marks these sizes [verified] (its own air constants); figures with 1-2 significant digits
+TEST_CASE("sample effect sizes of docs/physics.md 5.1 for the reference case (Miki 10 kPa s/m2, 50 mm, d = 100 mm)") {
+  // docs/physics.md quotes these sizes (computed with admitgen's air); figures with 1-2 significant digits
   // are matched to ±20 % of the value.
   const Air air = Air::at_celsius(20.0);
   const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(1801, 100.0, 1900.0);
@@ -112,17 +112,17 @@ TEST_CASE("sample effect sizes of physics.md 5.1 for the reference case (Miki 10
   const auto near = [](double value, double published) { return std::abs(value - published) <= 0.2 * published; };
   for (const auto& [w, published] : {std::pair{0.25e-3, 0.002}, std::pair{0.5e-3, 0.007}, std::pair{1e-3, 0.052}}) {
     const double got = max_delta_alpha(apply_edge_gap(EdgeGap{w, 0.05}, 0.1, air, f, y));
-    MESSAGE("edge_gap w = ", w, " m: max |d alpha| = ", got, " (physics.md ", published, ")");
+    MESSAGE("edge_gap w = ", w, " m: max |d alpha| = ", got, " (docs/physics.md ", published, ")");
     CHECK(near(got, published));
   }
   const double frame = max_delta_alpha(apply_frame_resonance(FrameResonance{600.0, 8.0, 0.3}, f, y));
-  MESSAGE("frame_resonance 600 Hz, Q 8, y_peak 0.3: max |d alpha| = ", frame, " (physics.md 0.23)");
+  MESSAGE("frame_resonance 600 Hz, Q 8, y_peak 0.3: max |d alpha| = ", frame, " (docs/physics.md 0.23)");
   CHECK(near(frame, 0.23));
   for (const auto& [gap, published] : {std::pair{1e-3, 0.013}, std::pair{5e-3, 0.063}}) {
     LayeredAbsorber with_gap = miki;
     with_gap.layers.push_back(AirLayer{gap});
     const double got = max_delta_alpha(surface_admittance(with_gap, air, f));
-    MESSAGE("air_gap ", gap, " m: max |d alpha| = ", got, " (physics.md ", published, ")");
+    MESSAGE("air_gap ", gap, " m: max |d alpha| = ", got, " (docs/physics.md ", published, ")");
     CHECK(near(got, published));
   }
 }

@@ -47,7 +47,7 @@ TEST_CASE("material SPEC: multipole by parameters evaluates model/multipole with
   Eigen::VectorXd theta(7);
   theta << 0.469, -26062, 55250, 2019, -263, 1530, 10063;
   CHECK(surface.theta.isApprox(theta, 0.0));
-  // materials.md §3.1 (derived): Y(1 kHz) = 0.1248 − 0.4122i in e^{−iωt}, i.e. 0.1248 + 0.4122j here.
+  // docs/materials.md §3.1 (derived): Y(1 kHz) = 0.1248 − 0.4122i in e^{−iωt}, i.e. 0.1248 + 0.4122j here.
   const std::complex<double> y = surface_admittance(m, Air::at_celsius(20.0), test::at(1000.0))[0];
   CHECK(std::abs(y - std::complex<double>(0.1248, 0.4122)) <= 1e-4);
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Maa's micro-perforated panel over an air cavity, built by the transfer-matrix stack
-// mpp(...) + air(D), against Maa's closed form and the derived table of materials.md §2.4.
+// mpp(...) + air(D), against Maa's closed form and the derived table of docs/materials.md §2.4.
 #include "physics/micro_perforated.hpp"
 #include "physics/transfer_matrix.hpp"
 #include "physics_test_support.hpp"
@@ -35,8 +35,8 @@ TEST_CASE("MPP + air cavity by transfer matrices equals Maa's closed form z = r 
   }
 }
 
-TEST_CASE("MPP examples of materials.md: resonance frequency, peak absorption, r(f0) and the alpha >= 0.5 band") {
-  // Derived table (materials.md §2.4), first resonance below c0/2D, scanned on a 0.5 Hz grid.
+TEST_CASE("MPP examples of docs/materials.md: resonance frequency, peak absorption, r(f0) and the alpha >= 0.5 band") {
+  // Derived table (docs/materials.md §2.4), first resonance below c0/2D, scanned on a 0.5 Hz grid.
   // Tolerances: f0 ±2 Hz (the table's grid is not stated; 1 Hz rounding plus grid), α_max ±6e-4
   // (3 decimals), r(f0) ±6e-3 (2 decimals).
   // The table's α ≥ 0.5 bands (407-1824, 477-1305, 209-604 Hz) are NOT reproduced by its own formulas

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Noise of contract.md: complex Gaussian with E|n|² = σ² (σ²/2 per component), drawn from core/rng.hpp,
+// Noise of docs/cli.md: complex Gaussian with E|n|² = σ² (σ²/2 per component), drawn from core/rng.hpp,
 // and the heteroscedastic std σ √(1 + (scale/|sin ks|)²).
 #include "physics/noise.hpp"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Porous equivalent-fluid models against the published and independently derived values of
-// materials.md §2.1-2.3 (air constants as materials.md states them: ρ0 = 1.213, c0 = 343, ...).
+// docs/materials.md §2.1-2.3 (air constants as docs/materials.md states them: ρ0 = 1.213, c0 = 343, ...).
 //
 // Tolerances: a value printed with n decimals is matched to half a unit of its last digit plus 1e-4
 // of slack for the last-digit rounding of inputs (e.g. 5.5e-4 for a 3-decimal value); this is tight
@@ -47,7 +47,7 @@ TEST_CASE("Delany-Bazley characteristic impedance and wavenumber at X = rho0 f/s
   const double sigma = 10000.0, f = 0.1 * sigma / air.rho0;
   const Propagation p = propagation(DelanyBazley{sigma}, air, test::at(f));
   const cd zc = p.zc[0] / air.rho_c(), kc = p.kc[0] / (2.0 * static_cast<double>(EIGEN_PI) * f / air.c0);
-  // Published test vector (materials.md §2.1): Z_c/ρ0c0 = 1.324 − 0.469j.
+  // Published test vector (docs/materials.md §2.1): Z_c/ρ0c0 = 1.324 − 0.469j.
   CHECK(std::abs(zc.real() - 1.324) <= kThreeDecimals);
   CHECK(std::abs(zc.imag() - (-0.469)) <= kThreeDecimals);
   // No published k_c vector for Delany-Bazley; derived independently (Python, the formula's
@@ -61,7 +61,7 @@ TEST_CASE("Miki characteristic impedance and wavenumber at X = f/sigma = 0.1") {
   const double sigma = 10000.0, f = 0.1 * sigma;
   const Propagation p = propagation(Miki{sigma}, air, test::at(f));
   const cd zc = p.zc[0] / air.rho_c(), kc = p.kc[0] / (2.0 * static_cast<double>(EIGEN_PI) * f / air.c0);
-  // Published test vector (materials.md §2.1): Z_c/ρ0c0 = 1.300 − 0.4586j, k_c/k0 = 1.4523 − 0.6640j.
+  // Published test vector (docs/materials.md §2.1): Z_c/ρ0c0 = 1.300 − 0.4586j, k_c/k0 = 1.4523 − 0.6640j.
   // The formula gives Im k_c/k0 = −0.160·10^0.618 = −0.663926, which rounds to −0.6639, not −0.6640:
   // the third-party vector is off by one in its last digit, so that component gets 1e-4 (two units).
   CHECK(std::abs(zc.real() - 1.300) <= kThreeDecimals);
@@ -70,30 +70,30 @@ TEST_CASE("Miki characteristic impedance and wavenumber at X = f/sigma = 0.1") {
   CHECK(std::abs(kc.imag() - (-0.6640)) <= 1e-4);
 }
 
-TEST_CASE("Delany-Bazley rigid-backed layer, sigma = 10 kPa s/m2, d = 50 mm (materials.md derived z / alpha)") {
+TEST_CASE("Delany-Bazley rigid-backed layer, sigma = 10 kPa s/m2, d = 50 mm (docs/materials.md derived z / alpha)") {
   check_rigid_backed(DelanyBazley{10000.0}, 0.05,
                      {{250, {0.604, -3.383}, 0.172}, {500, {0.608, -1.524}, 0.496},
                       {1000, {0.653, -0.470}, 0.884}, {2000, {1.134, 0.214}, 0.986}});
 }
 
-TEST_CASE("Miki rigid-backed layer, sigma = 10 kPa s/m2, d = 50 mm (materials.md derived z / alpha)") {
+TEST_CASE("Miki rigid-backed layer, sigma = 10 kPa s/m2, d = 50 mm (docs/materials.md derived z / alpha)") {
   check_rigid_backed(Miki{10000.0}, 0.05,
                      {{250, {0.655, -3.301}, 0.192}, {500, {0.596, -1.538}, 0.485},
                       {1000, {0.657, -0.480}, 0.883}, {2000, {1.229, 0.200}, 0.982}});
 }
 
-TEST_CASE("JCA rigid-backed Domisol glass wool, d = 50 mm (materials.md derived z / alpha)") {
-  // Allard & Atalla Tab. 6.1 as transcribed in materials.md: φ 0.94, σ 40 000, α∞ 1.06, Λ 56 µm, Λ' 110 µm.
+TEST_CASE("JCA rigid-backed Domisol glass wool, d = 50 mm (docs/materials.md derived z / alpha)") {
+  // Allard & Atalla Tab. 6.1 as stated in docs/materials.md: φ 0.94, σ 40 000, α∞ 1.06, Λ 56 µm, Λ' 110 µm.
   check_rigid_backed(JohnsonChampouxAllard{0.94, 40000.0, 1.06, 56e-6, 110e-6}, 0.05,
                      {{250, {1.702, -3.350}, 0.367}, {500, {1.688, -1.749}, 0.657},
                       {1000, {1.645, -1.005}, 0.822}, {2000, {1.512, -0.714}, 0.887}});
 }
 
-TEST_CASE("Horoshenkov 2019: derived JCAL parameters and rigid-backed 10 mm layer (materials.md §2.3)") {
+TEST_CASE("Horoshenkov 2019: derived JCAL parameters and rigid-backed 10 mm layer (docs/materials.md §2.3)") {
   const Horoshenkov2019 m{0.90, 147e-6, 0.325};
   const Air air = test::materials_md_air();
   const HoroshenkovDerived d = derived_parameters(m, air);
-  // materials.md: α∞ = 1.225, σ = 12 570 Pa·s/m², Λ = 129.5 µm, Λ' = 158.6 µm (printed to 4 digits).
+  // docs/materials.md: α∞ = 1.225, σ = 12 570 Pa·s/m², Λ = 129.5 µm, Λ' = 158.6 µm (printed to 4 digits).
   CHECK(std::abs(d.tortuosity - 1.225) <= 5e-4);
   CHECK(std::abs(d.flow_resistivity - 12570.0) <= 5.0);
   CHECK(std::abs(d.viscous_length - 129.5e-6) <= 0.05e-6);

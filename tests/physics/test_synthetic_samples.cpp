@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The synthetic samples committed under samples/synthetic/: the glass-beads data regenerate byte for
-// byte (same SPEC, noise, seed → same file), and the committed fits select what README_SECTION.md states.
+// byte (same SPEC, noise, seed → same file), and the committed fits select what samples/synthetic/README.md states.
 // The fits are not re-run here (5 s + 14 s of nested sampling); only their fit.json is read.
 #include "test_support.hpp"
 

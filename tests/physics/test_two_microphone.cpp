@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The ISO 10534-2 chain R → H12 → R, and each chain effect of contract.md against its first-order
-// closed form (physics.md §5.1 a-d, m), derived here independently of the chain code:
+// The ISO 10534-2 chain R → H12 → R, and each chain effect of docs/cli.md against its first-order
+// closed form (docs/physics.md §5.1 a-d, m), derived here independently of the chain code:
 //   ∂y/∂R = −2/(1 + R)²,  ∂R/∂H = (H_R − H_I) e^{2jkx1}/(H_R − H)²,  p(x) = e^{jkx} + R e^{−jkx},
 //   a. reference plane  ∂y/∂δ = 4jkR/(1 + R)²                                   (R_m = R e^{−2jkδ})
 //   b. mic spacing      ∂H/∂δ_s = −p'(x2)/p(x1),  p'(x) = jk(e^{jkx} − R e^{−jkx})
@@ -8,8 +8,8 @@
 //                       i.e. δ = x1 ε and δ_s = s ε with ε = c/c' − 1, plus y → y ρ0c0(T+ΔT)/ρ0c0(T)
 //   d. tube losses      ∂H/∂k · (1 − j) α_K,  α_K = 0.0194 √f/(c d)
 //   m. mic mismatch     ∂H = H (gain + jφ)
-// Reference case (physics.md §5): Miki σ = 10 kPa·s/m², 50 mm, rigid-backed; tube d = 100 mm,
-// x1 = 100 mm, s = 50 mm; 100-1900 Hz; air at 20 °C as contract.md defines it.
+// Reference case (docs/physics.md §5.0): Miki σ = 10 kPa·s/m², 50 mm, rigid-backed; tube d = 100 mm,
+// x1 = 100 mm, s = 50 mm; 100-1900 Hz; air at 20 °C as docs/cli.md defines it.
 #include "physics/effects.hpp"
 #include "physics/transfer_matrix.hpp"
 #include "physics/two_microphone.hpp"
@@ -86,7 +86,7 @@ TEST_CASE("reference_plane: the closed form R e^{-2jk delta} equals the chain wi
   CHECK((closed - rc.measured(d)).abs().maxCoeff() <= 1e-12);
 }
 
-TEST_CASE("chain effects reproduce their first-order closed forms (physics.md 5.1) for a small parameter") {
+TEST_CASE("chain effects reproduce their first-order closed forms (docs/physics.md 5.1) for a small parameter") {
   // For a parameter of size ε the neglected terms are O(ε²): relative to the first-order term they are
   // a few times the dimensionless size of the perturbation (kδ, k δ_s, ΔT/T, α_K x1, gain), amplified at
   // most by 1/|1 + R| ≤ 1/0.5 here (asserted). Each bound below is 10 × that size; a wrong sign or factor
@@ -146,8 +146,8 @@ TEST_CASE("chain effects reproduce their first-order closed forms (physics.md 5.
   }
 }
 
-TEST_CASE("chain effect sizes of physics.md 5.1 for the reference case") {
-  // physics.md marks these sizes [verified] for this case (its own air constants, not stated);
+TEST_CASE("chain effect sizes of docs/physics.md 5.1 for the reference case") {
+  // docs/physics.md quotes these sizes for this case (computed with admitgen's air);
   // figures printed to 1-2 significant digits are matched to ±15 % of the value.
   const ReferenceCase rc;
   const auto rel = [](cd a, cd b) { return std::abs(a - b) / std::abs(b); };
@@ -184,7 +184,7 @@ TEST_CASE("chain effect sizes of physics.md 5.1 for the reference case") {
     CHECK(near(worst_alpha, 0.004));
   }
   SUBCASE("tube_losses: rigid termination processed lossless reads alpha up to 0.007 (d = 100 mm)") {
-    // physics.md gives 0.005-0.007 without naming the band or the constant (0.0204 vs ISO's 0.0194);
+    // A design note gave 0.005-0.007 without naming the band or the constant (0.0204 vs ISO's 0.0194);
     // the top of the range is matched here; the bottom is not (0.0034 at 100 Hz, growing like √f).
     const Eigen::ArrayXcd rigid = Eigen::ArrayXcd::Zero(rc.f.size());
     ChainDeviation d;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Test tool: renders a report page from saved JSON, for the headless-browser test and the README
+// Test tool: renders a report page from saved JSON, for the headless-browser test and docs/reports.md
 // screenshots. Usage:
 //   admitgen_render_report diagnosis DIAGNOSIS.json OUT_DIR      writes OUT_DIR/diagnosis.html
 //   admitgen_render_report fit FIT.json DATA.csv OUT_DIR          writes OUT_DIR/report.html (data read as f,re,im)

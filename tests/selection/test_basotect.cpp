@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Test 5 of the foundations issue: every real Basotect measurement (TU Berlin, samples/basotect_tuberlin)
+// Real data: every real Basotect measurement (TU Berlin, samples/basotect_tuberlin)
 // fits end to end over the Q0-3 × S0-3 grid, and the selected order explains the data.
 //
 // Settings: 100 live points (not 500) and one missed-mode retry round, to keep the four 904-1025-point
@@ -25,7 +25,7 @@ TEST_SUITE("statistical") {
     // 0.005, round_5cm 4.1 % / 0.007, rect_5cm 5.5 % / 0.026, rect_10cm 17 % / 0.077. rect_10cm gets its
     // own, looser bound: its data carry a sharp, lightly damped quarter-wave resonance near 590 Hz and its
     // best Q ≤ 3, S ≤ 3 fits press against the Table 1 prior bounds (G∞ at −1, C at ±1000, α at 0), so the
-    // default priors cannot express it (wider ranges only move it onto new bounds; see the README).
+    // default priors cannot express it (wider ranges only move it onto new bounds; see docs/validation.md).
     struct Case {
       const char* file;
       double max_relative_residual;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Test 4 of the foundations issue: peer agreement with dynesty (rslice, 500 live points) on the
+// Peer agreement with dynesty (rslice, 500 live points) on the
 // reference file (samples/reference/README.md), and recovery of the true Q1S1 parameters.
 #include "data/csv_reader.hpp"
 #include "selection/fit.hpp"

@@ -1,0 +1,127 @@
+# SPDX-License-Identifier: MIT
+# The generator's layers, read from generator/layers.txt (the one declaration; docs/architecture.md).
+# Used by the build (generator/CMakeLists.txt) and, in script mode, by tools/check-layers.
+#
+#   admitgen_read_layers(<table> <source-dir>)
+#       Parses the table and checks it (known names, every arrow points to a layer declared above, no
+#       layer twice). Sets in the caller: ADMITGEN_EXTERNAL_LAYERS (runtime), ADMITGEN_LAYERS (all,
+#       lowest first), ADMITGEN_PRESENT_LAYERS
+#       (those whose folder exists under <source-dir>), and for each layer L
+#       ADMITGEN_LAYER_<L>_PUBLIC / ADMITGEN_LAYER_<L>_PRIVATE (lists of layers or "runtime").
+#
+#   admitgen_add_layer_libraries(<suffix> <include-root>)   (build only)
+#       One library admitgen_layer_<L><suffix> per present layer, linked to the libraries of the
+#       layers it may use, PUBLIC or PRIVATE as declared, and an INTERFACE aggregate
+#       admitgen_core<suffix> over all of them. A layer's include directory is <include-root>/<L>, which
+#       holds a single link <L> -> generator/<L>: `#include "L/x.hpp"` resolves only in a target that
+#       links admitgen_layer_<L>, so an include of a layer that is not below fails to compile.
+#       Per layer, the caller may set ADMITGEN_LAYER_<L>_EXTRA_SOURCES (generated sources),
+#       ADMITGEN_LAYER_<L>_EXTRA_INCLUDES, ADMITGEN_LAYER_<L>_EXTRA_LIBS (PUBLIC) and
+#       ADMITGEN_LAYER_<L>_EXCLUDE (a regex of sources left out, e.g. an executable's main).
+#
+#   admitgen_link_as_layer_source(<target> <layer> <suffix>)   (build only)
+#       Links <target> as if its sources were sources of <layer>: the layer's library and its private
+#       layers (the tests' probes of tests/layers/).
+include_guard(GLOBAL)
+
+function(admitgen_read_layers table source_dir)
+  set(ADMITGEN_EXTERNAL_LAYERS runtime)  # not folders of generator/: the C99 runtime
+  set(ADMITGEN_EXTERNAL_LAYERS ${ADMITGEN_EXTERNAL_LAYERS} PARENT_SCOPE)
+  file(STRINGS ${table} rows)
+  set(layers "")
+  set(present "")
+  foreach(row IN LISTS rows)
+    if(row MATCHES "^[ \t]*(#|$)")
+      continue()
+    endif()
+    if(NOT row MATCHES "^[ \t]*([a-z_]+)[ \t]*\\|([a-z_ \t]*)\\|([a-z_ \t]*)$")
+      message(FATAL_ERROR "${table}: cannot read the row '${row}' (expected: layer | public ... | private ...)")
+    endif()
+    set(layer ${CMAKE_MATCH_1})
+    set(public_text "${CMAKE_MATCH_2}")
+    set(private_text "${CMAKE_MATCH_3}")  # string(REGEX) below resets CMAKE_MATCH_<n>
+    string(REGEX MATCHALL "[a-z_]+" public "${public_text}")
+    string(REGEX MATCHALL "[a-z_]+" private "${private_text}")
+    if(layer IN_LIST layers OR layer IN_LIST ADMITGEN_EXTERNAL_LAYERS)
+      message(FATAL_ERROR "${table}: layer '${layer}' is declared twice")
+    endif()
+    foreach(dep IN LISTS public private)
+      if(NOT dep IN_LIST layers AND NOT dep IN_LIST ADMITGEN_EXTERNAL_LAYERS)
+        message(FATAL_ERROR "${table}: layer '${layer}' may use '${dep}', which is not a layer declared above it "
+                            "(arrows point down the table only)")
+      endif()
+    endforeach()
+    foreach(dep IN LISTS public)
+      if(dep IN_LIST private)
+        message(FATAL_ERROR "${table}: layer '${layer}' names '${dep}' both public and private")
+      endif()
+    endforeach()
+    list(APPEND layers ${layer})
+    if(IS_DIRECTORY ${source_dir}/${layer})
+      list(APPEND present ${layer})
+    endif()
+    set(ADMITGEN_LAYER_${layer}_PUBLIC "${public}" PARENT_SCOPE)
+    set(ADMITGEN_LAYER_${layer}_PRIVATE "${private}" PARENT_SCOPE)
+  endforeach()
+  # Every folder of generator/ holding sources is a declared layer.
+  file(GLOB entries LIST_DIRECTORIES true RELATIVE ${source_dir} ${source_dir}/*)
+  foreach(entry IN LISTS entries)
+    if(IS_DIRECTORY ${source_dir}/${entry} AND NOT entry IN_LIST layers)
+      file(GLOB_RECURSE sources ${source_dir}/${entry}/*.cpp ${source_dir}/${entry}/*.hpp)
+      if(sources)
+        message(FATAL_ERROR "generator/${entry}/ is not a declared layer: add a row for it to ${table}")
+      endif()
+    endif()
+  endforeach()
+  set(ADMITGEN_LAYERS "${layers}" PARENT_SCOPE)
+  set(ADMITGEN_PRESENT_LAYERS "${present}" PARENT_SCOPE)
+endfunction()
+
+if(NOT CMAKE_SCRIPT_MODE_FILE)
+  # The targets that provide the layers `deps` (layer names or "runtime"), for the layer set `suffix`.
+  function(admitgen_layer_targets out suffix)
+    set(targets "")
+    foreach(dep IN LISTS ARGN)
+      if(dep STREQUAL "runtime")
+        list(APPEND targets admitgen_rt)
+      elseif(dep IN_LIST ADMITGEN_PRESENT_LAYERS)
+        list(APPEND targets admitgen_layer_${dep}${suffix})
+      endif()
+    endforeach()
+    set(${out} ${targets} PARENT_SCOPE)
+  endfunction()
+
+  function(admitgen_add_layer_libraries suffix include_root)
+    set(aggregate admitgen_core${suffix})
+    add_library(${aggregate} INTERFACE)
+    foreach(layer IN LISTS ADMITGEN_PRESENT_LAYERS)
+      set(target admitgen_layer_${layer}${suffix})
+      file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.cpp)
+      if(ADMITGEN_LAYER_${layer}_EXCLUDE)
+        list(FILTER sources EXCLUDE REGEX "${ADMITGEN_LAYER_${layer}_EXCLUDE}")
+      endif()
+      list(APPEND sources ${ADMITGEN_LAYER_${layer}_EXTRA_SOURCES})
+      admitgen_layer_targets(public_targets "${suffix}" ${ADMITGEN_LAYER_${layer}_PUBLIC})
+      admitgen_layer_targets(private_targets "${suffix}" ${ADMITGEN_LAYER_${layer}_PRIVATE})
+      if(sources)
+        add_library(${target} STATIC ${sources})
+        admitgen_warnings(${target})
+        set(usage PUBLIC)
+        target_link_libraries(${target} PRIVATE ${private_targets})
+      else()  # headers only: nothing is private
+        add_library(${target} INTERFACE)
+        set(usage INTERFACE)
+        list(APPEND public_targets ${private_targets})
+      endif()
+      target_include_directories(${target} ${usage} ${include_root}/${layer} ${ADMITGEN_LAYER_${layer}_EXTRA_INCLUDES})
+      target_link_libraries(${target} ${usage} ${public_targets} Eigen3::Eigen nlohmann_json::nlohmann_json fmt::fmt
+                                               OpenSSL::Crypto Threads::Threads ${ADMITGEN_LAYER_${layer}_EXTRA_LIBS})
+      target_link_libraries(${aggregate} INTERFACE ${target})
+    endforeach()
+  endfunction()
+
+  function(admitgen_link_as_layer_source target layer suffix)
+    admitgen_layer_targets(private_targets "${suffix}" ${ADMITGEN_LAYER_${layer}_PRIVATE})
+    target_link_libraries(${target} PRIVATE admitgen_layer_${layer}${suffix} ${private_targets})
+  endfunction()
+endif()
