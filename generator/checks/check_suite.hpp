@@ -9,8 +9,8 @@
 ///  passivity_discrete    Re H(e^{jθ}) ≥ 0 on [0, π] for the emitted, quantised filter (bilinear map z → s)
 ///  headroom              L1 norm of each state's and the output's impulse response within its Q range,
 ///                        64-bit accumulator bounds (q31/q15)
-///  limit_cycle           zero input after full-scale states reaches exactly 0 (fixed point: bit-exact
-///                        integer model; f32: IEEE single simulation) — no limit cycle, no deadband
+///  limit_cycle           zero input after full-scale states reaches exactly 0 (the runtime's own kernels,
+///                        codegen/runtime_filter.hpp) — no limit cycle, no deadband
 ///  header_integrity      the C tables and model structs equal the machine-readable block
 #pragma once
 

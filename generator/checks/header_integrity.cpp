@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "checks/check_suite.hpp"
 
+#include "codegen/runtime_filter.hpp"
+
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <map>
+#include <tuple>
 #include <optional>
 
 namespace admitgen::checks {
@@ -69,6 +73,46 @@ void compare(CheckResult& r, const std::string& text, const std::string& type, c
   }
 }
 
+/// Compares the model struct's fields, initialised by name (`ADMITGEN_RT_FIELD(name) value`,
+/// templates/admitgen_boundary.h.in), with the expected {field, value, is_float}.
+void compare_fields(CheckResult& r, const std::string& text, const std::string& type, const std::string& name,
+                    const std::vector<std::tuple<std::string, double, bool>>& expected) {
+  const auto tokens = initialiser(text, type, name, false);
+  if (!tokens) {
+    r.fail(fmt::format("{}: declaration missing or unreadable", name));
+    return;
+  }
+  const std::string tag = "ADMITGEN_RT_FIELD(";
+  std::map<std::string, std::string> fields;
+  for (const auto& t : *tokens) {
+    const std::size_t close = t.find(')');
+    if (t.compare(0, tag.size(), tag) != 0 || close == std::string::npos) continue;
+    const std::string value = t.substr(close + 1);
+    const std::size_t b = value.find_first_not_of(" \t\r\n");
+    fields[t.substr(tag.size(), close - tag.size())] = b == std::string::npos ? "" : value.substr(b);
+  }
+  for (const auto& [field, value, is_float] : expected) {
+    const auto it = fields.find(field);
+    if (it == fields.end()) {
+      r.fail(fmt::format("{}.{}: not initialised by name in the C struct", name, field));
+      continue;
+    }
+    const auto v = literal(it->second, is_float);
+    if (!v || *v != value)
+      r.fail(fmt::format("{}.{} is '{}' in the C struct but {} in the machine-readable block: the struct was edited",
+                         name, field, it->second, value));
+  }
+}
+
+/// A rate's tables as the runtime reads them (codegen/runtime_filter.hpp), entries as doubles.
+struct Tables {
+  std::vector<double> fir, real, pair;
+};
+template <typename Sample>
+Tables tables(const codegen::RuntimeModel<Sample>& t) {
+  return {{t.fir().begin(), t.fir().end()}, {t.real().begin(), t.real().end()}, {t.pair().begin(), t.pair().end()}};
+}
+
 }  // namespace
 
 CheckResult check_header_integrity(const CheckSubject& s) {
@@ -87,32 +131,26 @@ CheckResult check_header_integrity(const CheckSubject& s) {
   std::size_t values = 0;
   for (const auto& rate : h.rates) {
     const std::string base = fmt::format("{}_{}", h.name, rate.fs_hz);
-    std::vector<double> fir, real, pair, scalars;
     const auto& m = rate.model;
-    if (f32) {
-      const auto f = codegen::to_float(m);
-      for (float v : f.fir) fir.push_back(v);
-      for (const auto& t : f.real) real.insert(real.end(), t.begin(), t.end());
-      for (const auto& t : f.pair) pair.insert(pair.end(), t.begin(), t.end());
-      scalars = {double(f.h0)};
-    } else {
-      const auto& q = *rate.fixed;
-      for (auto v : q.fir) fir.push_back(v);
-      for (const auto& t : q.real) real.insert(real.end(), {double(t.eps), double(t.shift), double(t.c)});
-      for (const auto& t : q.pair)
-        pair.insert(pair.end(), {double(t.e_r), double(t.p_i), double(t.g), double(t.shift), double(t.c_r), double(t.c_i)});
-      scalars = {double(q.out_shift), double(q.acc_shift)};
-    }
+    const Tables t = f32 ? tables(codegen::RuntimeModelF32(codegen::to_float(m), rate.fs_hz))
+                     : h.format == codegen::Format::q31 ? tables(codegen::RuntimeModelQ31(*rate.fixed, rate.fs_hz))
+                                                        : tables(codegen::RuntimeModelQ15(*rate.fixed, rate.fs_hz));
+    const auto& [fir, real, pair] = t;
     compare(r, s.header_text, ctype, base + "_fir", true, fir, f32, 0, fir.size());
     compare(r, s.header_text, ctype, base + "_real", true, real, f32, 0, real.size());
     compare(r, s.header_text, ctype, base + "_pair", true, pair, f32, 0, pair.size());
-    // Model struct: {abi, fs, method, n_fir, n_real, n_pair, <h0 | out_shift, acc_shift>, pointers...}
-    const std::vector<double> shape{double(codegen::kRuntimeAbi), double(rate.fs_hz)};
-    compare(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, false, shape, false, 0, 2);
-    const std::vector<double> counts{double(m.fir.size()), double(m.real.size()), double(m.pair.size())};
-    compare(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, false, counts, false, 3, 3);
-    compare(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, false, scalars, f32, 6, scalars.size());
-    values += fir.size() + real.size() + pair.size() + scalars.size() + 5;
+    std::vector<std::tuple<std::string, double, bool>> fields{
+        {"abi_version", double(codegen::kRuntimeAbi), false}, {"fs_hz", double(rate.fs_hz), false},
+        {"n_fir", double(m.fir.size()), false},               {"n_real", double(m.real.size()), false},
+        {"n_pair", double(m.pair.size()), false}};
+    if (f32) {
+      fields.emplace_back("h0", double(codegen::to_float(m).h0), true);
+    } else {
+      fields.emplace_back("out_shift", double(rate.fixed->out_shift), false);
+      fields.emplace_back("acc_shift", double(rate.fixed->acc_shift), false);
+    }
+    compare_fields(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, fields);
+    values += fir.size() + real.size() + pair.size() + fields.size();
   }
   r.summary = r.failures.empty() ? fmt::format("{} table values and struct fields match the block", values)
                                  : "the C tables differ from the machine-readable block";

@@ -12,20 +12,6 @@
 namespace admitgen::codegen {
 namespace {
 
-using i64 = std::int64_t;
-
-/// floor(v / 2^s) for s in [1, 62] (the runtime's rt_floor_shr).
-i64 floor_shr(i64 v, int s) { return v >= 0 ? (v >> s) : ~((~v) >> s); }
-
-/// old + prod/2^s rounded toward zero of the result (magnitude truncation), saturated to int32.
-std::int32_t add_tz(std::int32_t old, i64 prod, int s) {
-  const i64 q = floor_shr(prod, s);
-  i64 v = i64(old) + q;
-  const std::uint64_t mask = (std::uint64_t{1} << s) - 1;
-  if (v < 0 && (static_cast<std::uint64_t>(prod) & mask) != 0) v += 1;
-  return static_cast<std::int32_t>(std::clamp<i64>(v, INT32_MIN, INT32_MAX));
-}
-
 std::int32_t round_to_int(double v, int bits) {
   const double r = std::nearbyint(v);
   const double lim = std::ldexp(1.0, bits);
@@ -162,46 +148,6 @@ int FixedCoefficients::zero_decay_bound() const {
   for (const auto& p : d.pair) slowest = std::min(slowest, -std::log(std::hypot(1.0 + p.e_r, p.p_i)));
   const double n = std::isinf(slowest) ? 0.0 : 31.5 * std::log(2.0) / slowest;
   return static_cast<int>(std::ceil(n)) + static_cast<int>(fir.size()) + 1;
-}
-
-std::vector<std::int32_t> run_fixed(const FixedCoefficients& c, const std::vector<std::int32_t>& in,
-                                    FixedState* state) {
-  const int b = c.bits;
-  const bool q15 = c.format == Format::q15;
-  FixedState zero{std::vector<std::int32_t>(c.real.size(), 0), std::vector<std::int32_t>(c.pair.size(), 0),
-                  std::vector<std::int32_t>(c.pair.size(), 0), std::vector<std::int32_t>(c.fir.size(), 0)};
-  FixedState& st = state != nullptr ? *state : zero;
-  ADMITGEN_ENSURE(st.x.size() == c.real.size() && st.xi.size() == c.pair.size() && st.eta.size() == c.pair.size() &&
-                      st.hist.size() == c.fir.size(),
-                  "state shape does not match the coefficients");
-  auto& x = st.x;
-  auto& xi = st.xi;
-  auto& eta = st.eta;
-  auto& hist = st.hist;  // hist[k] = u^{n-k}
-  std::vector<std::int32_t> y(in.size());
-  const i64 round = i64{1} << (c.acc_shift - 1);
-  const i64 lo = q15 ? INT16_MIN : INT32_MIN, hi = q15 ? INT16_MAX : INT32_MAX;
-  for (std::size_t n = 0; n < in.size(); ++n) {
-    const std::int32_t u = q15 ? in[n] * 65536 : in[n];
-    for (std::size_t k = hist.size(); k-- > 1;) hist[k] = hist[k - 1];
-    if (!hist.empty()) hist[0] = u;
-    i64 acc = 0;
-    for (std::size_t k = 0; k < hist.size(); ++k) acc += i64(c.fir[k]) * hist[k];
-    for (std::size_t q = 0; q < c.real.size(); ++q) {
-      const auto& t = c.real[q];
-      x[q] = add_tz(x[q], i64(t.eps) * (i64(u) - x[q]), b + t.shift);
-      acc += i64(t.c) * x[q];
-    }
-    for (std::size_t s = 0; s < c.pair.size(); ++s) {
-      const auto& t = c.pair[s];
-      const std::int32_t a = xi[s], e = eta[s];
-      xi[s] = add_tz(a, i64(t.e_r) * a - i64(t.p_i) * e + i64(t.g) * u, b + t.shift);
-      eta[s] = add_tz(e, i64(t.e_r) * e + i64(t.p_i) * a, b + t.shift);
-      acc += i64(t.c_r) * xi[s] + i64(t.c_i) * eta[s];
-    }
-    y[n] = static_cast<std::int32_t>(std::clamp<i64>(floor_shr(acc + round, c.acc_shift), lo, hi));
-  }
-  return y;
 }
 
 }  // namespace admitgen::codegen

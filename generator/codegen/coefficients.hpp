@@ -1,24 +1,14 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// The coefficients actually emitted for one sample rate and format, and a bit-exact C++ model of the
-/// fixed-point runtime kernels (runtime/src/admitgen_rt_process_q31.c, _q15.c): the source of golden
-/// vectors and the object a checker (`admitgen check`) reads back from a header.
+/// The coefficients actually emitted for one sample rate and format: the float tables, and the fixed-point
+/// quantisation (per-term exponents, one output exponent, output scaling) whose representation, bounds and
+/// rounding are stated once in docs/runtime.md, "Q formats and rounding". The runtime's kernels run them
+/// (codegen/runtime_filter.hpp); a checker (`admitgen check`) reads them back from a header.
 ///
-/// Fixed-point representation (ARM notation "1.31"/"1.15"; TI Q0.31/Q0.15). B = 31 (q31) or 15 (q15)
-/// mantissa bits:
-///  * input u: q31 as is; q15 promoted to Q31 by ×2^16 (exact). States ξ, η, x and the FIR history are
-///    int32 Q31 for both formats ("wider state" for q15); every state is normalised so |state| ≤ max|u|.
-///  * state-update coefficients, per term: mantissa M with its own exponent `shift` (delta form, so the
-///    relative precision of ε = 1 − e^{−λT} is 2^−B whatever λT is — the 1 − e^{−λT} problem):
-///      real: ε = M_eps · 2^−(B+shift);  pair: (e_r, p_i, g) = (M_er, M_pi, M_g) · 2^−(B+shift), with
-///      |M_er| + |M_pi| + |M_g| < 2^B so the 64-bit sum of products cannot overflow.
-///  * output table (FIR taps, c_q, 2 Re c_s, −2 Im c_s): one exponent y_exp, value = M · 2^(y_exp−B),
-///    Σ|M| < 2^B, so |acc| < 2^(B+31) in the 64-bit accumulator.
-///  * output: y_out = round(acc · 2^−acc_shift), saturated, where y_out represents y · 2^−out_shift and
-///    2^out_shift ≥ ‖h‖₁ (L1 norm of the quantised filter): a full-scale worst-case-sign input cannot clip.
-///  * rounding: state updates are rounded toward zero of the *new state value* (magnitude truncation,
-///    which makes every state contract strictly: zero input decays to exactly 0, no limit cycle);
-///    the output is rounded to nearest (half up); it is not fed back.
+/// Quantisation choices made here: a term's exponent is the largest that keeps its mantissas (a pair: the
+/// sum |M_er| + |M_pi| + |M_g|) below 2^B with room for rounding, so ε = 1 − e^{−λT} keeps B significant
+/// bits however slow the pole is; the output table's one exponent y_exp keeps Σ|M| below 2^B; out_shift is
+/// the smallest with 2^out_shift ≥ ‖h‖₁ (1 + 2^−10) of the quantised filter.
 #pragma once
 
 #include "codegen/discrete_model.hpp"
@@ -72,16 +62,5 @@ struct FixedCoefficients {
 
 /// Quantises to q31 or q15 (throws InternalError for f32).
 FixedCoefficients quantise(const DiscreteModel& model, Format format);
-
-/// Q1.31 states of one node (x per real pole, ξ and η per pair, hist[k] = u^{n−k}, k < n_fir).
-struct FixedState {
-  std::vector<std::int32_t> x, xi, eta, hist;
-};
-
-/// Bit-exact model of admitgen_rt_process_q31 / _q15 for one node. Inputs are Q31 (q31) or Q15 values
-/// (q15) held in int32; outputs likewise. Starts from zero state, or from *state when given (sized as
-/// the coefficients), which then receives the final state.
-std::vector<std::int32_t> run_fixed(const FixedCoefficients& coefficients, const std::vector<std::int32_t>& in,
-                                    FixedState* state = nullptr);
 
 }  // namespace admitgen::codegen

@@ -147,21 +147,9 @@ bool better(const DiscreteModel& candidate, const DiscreteModel* incumbent, cons
   return candidate.refit_max_rel_error < 0.5 * incumbent->refit_max_rel_error;
 }
 
-}  // namespace
-
-DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
-                         const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
-  if (options.fold_factor <= 0.0) {
-    DiscreteModel best;
-    bool have = false;
-    for (double factor : {4.0, 0.5, 0.25}) {
-      DiscretiseOptions o = options;
-      o.fold_factor = factor;
-      DiscreteModel m = discretise(order, theta, fs_hz, data_f_hz, o);
-      if (better(m, have ? &best : nullptr, options)) best = std::move(m), have = true;
-    }
-    return best;
-  }
+/// Throws InputError unless fs is a positive rate that represents every data frequency (below 0.45 fs).
+void require_representable(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
+                           const std::vector<double>& data_f_hz) {
   ADMITGEN_ENSURE(theta.size() == order.dim(), "theta has {} entries for {}", theta.size(), order.name());
   if (!(fs_hz > 0.0) || !std::isfinite(fs_hz)) throw InputError(fmt::format("sample rate {} Hz is not positive", fs_hz));
   if (data_f_hz.empty()) throw InputError("the fit lists no data frequencies to refit at");
@@ -170,9 +158,13 @@ DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, doubl
     throw InputError(fmt::format("--fs {:g} Hz: the fit's data reach {:g} Hz, beyond 0.45 fs = {:g} Hz; a discrete "
                                  "filter at this rate cannot reproduce them (use fs > {:g} Hz)",
                                  fs_hz, f_top, 0.45 * fs_hz, f_top / 0.45));
-  const double t = 1.0 / fs_hz;
-  const double fold_rate = 2.0 * kPi * options.fold_factor * fs_hz;
+}
 
+/// The discrete poles (numerators still zero): each pole's exact image e^{−aT} in delta / coupled form, or
+/// its name in `folded` when its rate exceeds 2π fold_factor fs.
+DiscreteModel discrete_poles(const Order& order, const Eigen::VectorXd& theta, double fs_hz, double fold_factor) {
+  const double t = 1.0 / fs_hz;
+  const double fold_rate = 2.0 * kPi * fold_factor * fs_hz;
   DiscreteModel m;
   m.fs_hz = fs_hz;
   for (int q = 0; q < order.q(); ++q) {
@@ -203,160 +195,227 @@ DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, doubl
     p.g = -em1;
     m.pair.push_back(p);
   }
+  return m;
+}
 
-  // Target: the continuous model at the data frequencies (weight 1/|G|: relative error) plus a sparse
-  // baseband grid outside the data (weight kOutOfBandWeight/|G|) that keeps the refit sane where there are no data.
-  std::vector<double> f = data_f_hz;
-  std::vector<double> w(f.size(), 1.0);
+/// What the numerators are refitted to: the continuous model G at the data frequencies (weight 1/|G|:
+/// relative error) plus a sparse baseband grid outside the data (weight kOutOfBandWeight/|G|) that keeps the
+/// refit sane where there are no data. The data points come first (n_data of them).
+struct RefitTarget {
+  std::vector<double> f, w;  ///< frequencies (Hz) and row weights
+  Eigen::ArrayXd omega;      ///< 2π f
+  Eigen::ArrayXcd g;         ///< G(jω)
+  std::size_t n_data = 0;
+  double g_data_max = 0.0;  ///< max |G| over the data
+};
+
+RefitTarget refit_target(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
+                         const std::vector<double>& data_f_hz) {
+  RefitTarget tg;
+  tg.f = data_f_hz;
+  tg.w.assign(tg.f.size(), 1.0);
   const double f_lo = *std::min_element(data_f_hz.begin(), data_f_hz.end());
+  const double f_top = *std::max_element(data_f_hz.begin(), data_f_hz.end());
   for (int i = 0; i < 48; ++i) {
     const double fi = 1e-4 * fs_hz * std::pow(0.45 / 1e-4, i / 47.0);
     if (fi < f_lo || fi > f_top) {
-      f.push_back(fi);
-      w.push_back(kOutOfBandWeight);
+      tg.f.push_back(fi);
+      tg.w.push_back(kOutOfBandWeight);
     }
   }
-  Eigen::ArrayXd omega(static_cast<Eigen::Index>(f.size()));
-  for (std::size_t i = 0; i < f.size(); ++i) omega[static_cast<Eigen::Index>(i)] = 2.0 * kPi * f[i];
-  const Eigen::ArrayXcd g = evaluate_multipole(order, theta, omega);
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    const double mag = std::abs(g[static_cast<Eigen::Index>(i)]);
-    w[i] /= std::max(mag, 1e-12);
+  tg.omega.resize(static_cast<Eigen::Index>(tg.f.size()));
+  for (std::size_t i = 0; i < tg.f.size(); ++i) tg.omega[static_cast<Eigen::Index>(i)] = 2.0 * kPi * tg.f[i];
+  tg.g = evaluate_multipole(order, theta, tg.omega);
+  for (std::size_t i = 0; i < tg.f.size(); ++i) {
+    const double mag = std::abs(tg.g[static_cast<Eigen::Index>(i)]);
+    tg.w[i] /= std::max(mag, 1e-12);
   }
-  const std::size_t n_data = data_f_hz.size();
+  tg.n_data = data_f_hz.size();
+  for (std::size_t i = 0; i < tg.n_data; ++i) tg.g_data_max = std::max(tg.g_data_max, std::abs(tg.g[static_cast<Eigen::Index>(i)]));
+  return tg;
+}
 
-  // Plain PLRC, for the record: G∞ + Σ (b0 + b1 z^{-1})/(1 − z_a z^{-1}) (+ conjugate for pairs).
-  {
-    double worst = 0.0;
-    for (std::size_t i = 0; i < n_data; ++i) {
-      const double th = omega[static_cast<Eigen::Index>(i)] * t;
-      cplx h = theta[Order::g_inf()];
-      auto add = [&](cplx k, cplx a, bool conj_too) {
-        cplx b0, b1;
-        plrc_numerator(k, a, t, b0, b1);
-        const cplx za = std::exp(-a * t);
-        const cplx e = std::polar(1.0, -th), ep = std::polar(1.0, th);
-        const cplx term = (b0 + b1 * e) / (1.0 - za * e);
-        h += term;
-        if (conj_too) h += std::conj((b0 + b1 * ep) / (1.0 - za * ep));
-      };
-      for (int q = 0; q < order.q(); ++q) add(theta[Order::a(q)], theta[Order::lambda(q)], false);
-      for (int s = 0; s < order.s(); ++s)
-        add(cplx(theta[order.b(s)], theta[order.c(s)]), cplx(theta[order.alpha(s)], theta[order.beta(s)]), true);
-      const cplx gi = g[static_cast<Eigen::Index>(i)];
-      worst = std::max(worst, std::abs(h - gi) / std::abs(gi));
-    }
-    m.plrc_max_rel_error = worst;
+/// Max relative error at the data of plain PLRC, for the record: G∞ + Σ (b0 + b1 z^{-1})/(1 − z_a z^{-1})
+/// (+ conjugate for pairs), every pole kept.
+double plrc_max_rel_error(const Order& order, const Eigen::VectorXd& theta, double t, const RefitTarget& tg) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < tg.n_data; ++i) {
+    const double th = tg.omega[static_cast<Eigen::Index>(i)] * t;
+    cplx h = theta[Order::g_inf()];
+    auto add = [&](cplx k, cplx a, bool conj_too) {
+      cplx b0, b1;
+      plrc_numerator(k, a, t, b0, b1);
+      const cplx za = std::exp(-a * t);
+      const cplx e = std::polar(1.0, -th), ep = std::polar(1.0, th);
+      const cplx term = (b0 + b1 * e) / (1.0 - za * e);
+      h += term;
+      if (conj_too) h += std::conj((b0 + b1 * ep) / (1.0 - za * ep));
+    };
+    for (int q = 0; q < order.q(); ++q) add(theta[Order::a(q)], theta[Order::lambda(q)], false);
+    for (int s = 0; s < order.s(); ++s)
+      add(cplx(theta[order.b(s)], theta[order.c(s)]), cplx(theta[order.alpha(s)], theta[order.beta(s)]), true);
+    const cplx gi = tg.g[static_cast<Eigen::Index>(i)];
+    worst = std::max(worst, std::abs(h - gi) / std::abs(gi));
   }
+  return worst;
+}
 
-  // H is linear in x = [d_0..d_{L-1}, c_q, (c_r, c_i)_s]: H(e^{jθ}) = Σ_j x_j φ_j(θ).
-  const int n_terms = static_cast<int>(m.real.size() + 2 * m.pair.size());
-  auto basis = [](double th, int taps, const DiscreteModel& d) {
-    std::vector<cplx> phi;
-    for (int k = 0; k < taps; ++k) phi.push_back(std::polar(1.0, -double(k) * th));
-    for (const auto& r : d.real) phi.push_back(r.eps * resolvent(-r.eps, th));
-    for (const auto& p : d.pair) {
-      const cplx dl(p.e_r, p.p_i);
-      const cplx u1 = p.g * resolvent(dl, th), u2 = p.g * resolvent(std::conj(dl), th);
-      phi.push_back(u1 + u2);
-      phi.push_back(cplx(0.0, 1.0) * (u1 - u2));
+/// H is linear in the numerators x = [d_0..d_{L-1}, c_q, (c_r, c_i)_s]: H(e^{jθ}) = Σ_j x_j φ_j(θ).
+std::vector<cplx> numerator_basis(double th, int taps, const DiscreteModel& d) {
+  std::vector<cplx> phi;
+  for (int k = 0; k < taps; ++k) phi.push_back(std::polar(1.0, -double(k) * th));
+  for (const auto& r : d.real) phi.push_back(r.eps * resolvent(-r.eps, th));
+  for (const auto& p : d.pair) {
+    const cplx dl(p.e_r, p.p_i);
+    const cplx u1 = p.g * resolvent(dl, th), u2 = p.g * resolvent(std::conj(dl), th);
+    phi.push_back(u1 + u2);
+    phi.push_back(cplx(0.0, 1.0) * (u1 - u2));
+  }
+  return phi;
+}
+
+/// Writes the numerators x (numerator_basis order) into `out`.
+void assign_numerators(const Eigen::VectorXd& x, int taps, DiscreteModel& out) {
+  out.fir.assign(x.data(), x.data() + taps);
+  int j = taps;
+  for (auto& r : out.real) r.c = x[j++];
+  for (auto& p : out.pair) {
+    p.c = cplx(x[j], x[j + 1]);
+    j += 2;
+  }
+}
+
+/// Constraint grid (Hz) for Re H ≥ margin: θ = 0 and π, 160 log-spaced from 1e-5 fs and 63 linear up to
+/// Nyquist (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss).
+std::vector<double> passive_grid_hz(double fs_hz) {
+  std::vector<double> grid{0.0, 0.5 * fs_hz};
+  for (int i = 0; i < 160; ++i) grid.push_back(1e-5 * fs_hz * std::pow(0.5 / 1e-5, i / 159.0));
+  for (int i = 1; i < 64; ++i) grid.push_back(0.5 * fs_hz * i / 64.0);
+  return grid;
+}
+
+/// The weighted least-squares system A x ≈ b for `taps` FIR taps (stacked real/imaginary rows).
+void least_squares_system(const RefitTarget& tg, double t, int taps, const DiscreteModel& poles, Eigen::MatrixXd& a,
+                          Eigen::VectorXd& b) {
+  const int cols = taps + static_cast<int>(poles.real.size() + 2 * poles.pair.size());
+  const Eigen::Index rows = static_cast<Eigen::Index>(2 * tg.f.size());
+  a.resize(rows, cols);
+  b.resize(rows);
+  for (std::size_t i = 0; i < tg.f.size(); ++i) {
+    const auto phi = numerator_basis(tg.omega[static_cast<Eigen::Index>(i)] * t, taps, poles);
+    const Eigen::Index r0 = static_cast<Eigen::Index>(2 * i);
+    for (int j = 0; j < cols; ++j) {
+      a(r0, j) = tg.w[i] * phi[static_cast<std::size_t>(j)].real();
+      a(r0 + 1, j) = tg.w[i] * phi[static_cast<std::size_t>(j)].imag();
     }
-    return phi;
+    b[r0] = tg.w[i] * tg.g[static_cast<Eigen::Index>(i)].real();
+    b[r0 + 1] = tg.w[i] * tg.g[static_cast<Eigen::Index>(i)].imag();
+  }
+}
+
+/// Constraint generation (docs/passivity.md): while the certifier finds violations, solve A x ≈ b under
+/// Re H ≥ δ on the grid plus every violation found, and re-certify; sets passive_rounds and
+/// passive_certified. Certified means Re H ≥ δ up to Nyquist: the certifier sees H − δ (d_0 lowered by δ),
+/// so a refit that is passive only by a hair still gets the margin that coefficient rounding needs.
+void constrain_passive(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, double t, int taps, double delta,
+                       const DiscretiseOptions& options, DiscreteModel& out) {
+  const auto violations_with_margin = [&](const DiscreteModel& d) {
+    DiscreteModel shifted = d;
+    if (shifted.fir.empty()) shifted.fir.push_back(0.0);
+    shifted.fir[0] -= delta;
+    return options.passivity_violations(shifted);
   };
-  auto assign = [](const Eigen::VectorXd& x, int taps, DiscreteModel& out) {
-    out.fir.assign(x.data(), x.data() + taps);
-    int j = taps;
-    for (auto& r : out.real) r.c = x[j++];
-    for (auto& p : out.pair) {
-      p.c = cplx(x[j], x[j + 1]);
-      j += 2;
+  std::vector<double> where = passive_grid_hz(out.fs_hz), bad = violations_with_margin(out);
+  out.passive_rounds = 0;
+  for (int round = 1; !bad.empty() && round <= kMaxPassiveRounds; ++round) {
+    where.insert(where.end(), bad.begin(), bad.end());
+    Eigen::MatrixXd c(static_cast<Eigen::Index>(where.size()), a.cols());
+    for (std::size_t i = 0; i < where.size(); ++i) {
+      const auto phi = numerator_basis(2.0 * kPi * where[i] * t, taps, out);
+      for (Eigen::Index j = 0; j < a.cols(); ++j) c(static_cast<Eigen::Index>(i), j) = phi[static_cast<std::size_t>(j)].real();
     }
-  };
-  double g_data_max = 0.0;
-  for (std::size_t i = 0; i < n_data; ++i) g_data_max = std::max(g_data_max, std::abs(g[static_cast<Eigen::Index>(i)]));
-  // Constraint grid for Re H ≥ margin: θ = 0 and π, 160 log-spaced from 1e-5 fs and 63 linear up to
-  // Nyquist (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss).
-  std::vector<double> passive_grid_hz{0.0, 0.5 * fs_hz};
-  for (int i = 0; i < 160; ++i) passive_grid_hz.push_back(1e-5 * fs_hz * std::pow(0.5 / 1e-5, i / 159.0));
-  for (int i = 1; i < 64; ++i) passive_grid_hz.push_back(0.5 * fs_hz * i / 64.0);
-
-  // Weighted linear least squares for x; stacked real/imaginary rows.
-  auto fit_with = [&](int taps, DiscreteModel& out) {
-    const int cols = taps + n_terms;
-    const Eigen::Index rows = static_cast<Eigen::Index>(2 * f.size());
-    Eigen::MatrixXd a(rows, cols);
-    Eigen::VectorXd b(rows);
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      const auto phi = basis(omega[static_cast<Eigen::Index>(i)] * t, taps, out);
-      const Eigen::Index r0 = static_cast<Eigen::Index>(2 * i);
-      for (int j = 0; j < cols; ++j) {
-        a(r0, j) = w[i] * phi[static_cast<std::size_t>(j)].real();
-        a(r0 + 1, j) = w[i] * phi[static_cast<std::size_t>(j)].imag();
-      }
-      b[r0] = w[i] * g[static_cast<Eigen::Index>(i)].real();
-      b[r0 + 1] = w[i] * g[static_cast<Eigen::Index>(i)].imag();
-    }
-    const Eigen::VectorXd scale = a.colwise().norm().transpose().cwiseMax(1e-300);
-    assign((a * scale.cwiseInverse().asDiagonal()).colPivHouseholderQr().solve(b).cwiseQuotient(scale), taps, out);
-    if (options.passivity_violations) {
-      // Certified means Re H ≥ δ up to Nyquist: the certifier sees H − δ (d_0 lowered by δ), so a refit that
-      // is passive only by a hair still gets the margin that coefficient rounding needs.
-      const double delta = options.passive_margin * g_data_max;
-      const auto violations_with_margin = [&](const DiscreteModel& d) {
-        DiscreteModel shifted = d;
-        if (shifted.fir.empty()) shifted.fir.push_back(0.0);
-        shifted.fir[0] -= delta;
-        return options.passivity_violations(shifted);
-      };
-      // Constraint generation: solve under Re H ≥ δ on the grid plus every violation found, re-certify.
-      std::vector<double> where = passive_grid_hz, bad = violations_with_margin(out);
-      out.passive_rounds = 0;
-      for (int round = 1; !bad.empty() && round <= kMaxPassiveRounds; ++round) {
-        where.insert(where.end(), bad.begin(), bad.end());
-        Eigen::MatrixXd c(static_cast<Eigen::Index>(where.size()), cols);
-        for (std::size_t i = 0; i < where.size(); ++i) {
-          const auto phi = basis(2.0 * kPi * where[i] * t, taps, out);
-          for (int j = 0; j < cols; ++j) c(static_cast<Eigen::Index>(i), j) = phi[static_cast<std::size_t>(j)].real();
-        }
-        // Solved with 2δ, certified at δ: the slack absorbs the dips of Re H between constraint points,
-        // which would otherwise each cost a round.
-        const auto sol = numerics::least_squares_inequality(a, b, c, Eigen::VectorXd::Constant(c.rows(), 2.0 * delta));
-        if (!sol.feasible) break;
-        assign(sol.x, taps, out);
-        out.passive_rounds = round;
-        bad = violations_with_margin(out);
-      }
-      out.passive_certified = bad.empty();
-    }
-    double worst = 0.0;
-    for (std::size_t i = 0; i < n_data; ++i) {
-      const cplx gi = g[static_cast<Eigen::Index>(i)];
-      worst = std::max(worst, std::abs(out.response(f[i]) - gi) / std::abs(gi));
-    }
-    out.refit_max_rel_error = worst;
-  };
-
-  if (options.fir_taps > 0) {
-    fit_with(options.fir_taps, m);
-    return m;
+    // Solved with 2δ, certified at δ: the slack absorbs the dips of Re H between constraint points,
+    // which would otherwise each cost a round.
+    const auto sol = numerics::least_squares_inequality(a, b, c, Eigen::VectorXd::Constant(c.rows(), 2.0 * delta));
+    if (!sol.feasible) break;
+    assign_numerators(sol.x, taps, out);
+    out.passive_rounds = round;
+    bad = violations_with_margin(out);
   }
+  out.passive_certified = bad.empty();
+}
+
+/// Refits the numerators of `out` (its poles kept) with `taps` FIR taps: weighted linear least squares
+/// (columns scaled to unit norm), then, with a certifier, constrained until passive; records the error.
+void refit_numerators(const RefitTarget& tg, int taps, const DiscretiseOptions& options, DiscreteModel& out) {
+  const double t = 1.0 / out.fs_hz;
+  Eigen::MatrixXd a;
+  Eigen::VectorXd b;
+  least_squares_system(tg, t, taps, out, a, b);
+  const Eigen::VectorXd scale = a.colwise().norm().transpose().cwiseMax(1e-300);
+  assign_numerators((a * scale.cwiseInverse().asDiagonal()).colPivHouseholderQr().solve(b).cwiseQuotient(scale), taps, out);
+  if (options.passivity_violations) constrain_passive(a, b, t, taps, options.passive_margin * tg.g_data_max, options, out);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < tg.n_data; ++i) {
+    const cplx gi = tg.g[static_cast<Eigen::Index>(i)];
+    worst = std::max(worst, std::abs(out.response(tg.f[i]) - gi) / std::abs(gi));
+  }
+  out.refit_max_rel_error = worst;
+}
+
+/// Σ of the coefficient magnitudes (FIR taps, c_q, 2|c_s|).
+double coefficient_sum(const DiscreteModel& d) {
+  double s = 0.0;
+  for (double v : d.fir) s += std::abs(v);
+  for (const auto& r : d.real) s += std::abs(r.c);
+  for (const auto& p : d.pair) s += 2.0 * std::abs(p.c);
+  return s;
+}
+
+/// The best refit of `poles` over 1..kMaxFirTaps FIR taps (stopping at the first meeting the target), a
+/// refit whose coefficients grow beyond kMaxCoefficientGrowth max|G| excluded.
+DiscreteModel best_fir_length(const DiscreteModel& poles, const RefitTarget& tg, const DiscretiseOptions& options) {
   double g_max = 1.0;
-  for (Eigen::Index i = 0; i < g.size(); ++i) g_max = std::max(g_max, std::abs(g[i]));
-  auto coefficient_sum = [](const DiscreteModel& d) {
-    double s = 0.0;
-    for (double v : d.fir) s += std::abs(v);
-    for (const auto& r : d.real) s += std::abs(r.c);
-    for (const auto& p : d.pair) s += 2.0 * std::abs(p.c);
-    return s;
-  };
+  for (Eigen::Index i = 0; i < tg.g.size(); ++i) g_max = std::max(g_max, std::abs(tg.g[i]));
   DiscreteModel best;
   for (int taps = 1; taps <= DiscretiseOptions::kMaxFirTaps; ++taps) {
-    DiscreteModel trial = m;
-    fit_with(taps, trial);
+    DiscreteModel trial = poles;
+    refit_numerators(tg, taps, options, trial);
     if (taps > 1 && coefficient_sum(trial) > kMaxCoefficientGrowth * g_max) continue;
     if (better(trial, taps == 1 ? nullptr : &best, options)) best = trial;
     if (best.refit_max_rel_error <= options.target_rel_error && (!options.passivity_violations || best.passive_certified))
       break;
+  }
+  return best;
+}
+
+/// discretise at the options' fold_factor (> 0).
+DiscreteModel discretise_with_fold(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
+                                   const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
+  require_representable(order, theta, fs_hz, data_f_hz);
+  DiscreteModel m = discrete_poles(order, theta, fs_hz, options.fold_factor);
+  const RefitTarget tg = refit_target(order, theta, fs_hz, data_f_hz);
+  m.plrc_max_rel_error = plrc_max_rel_error(order, theta, 1.0 / fs_hz, tg);
+  if (options.fir_taps > 0) {
+    refit_numerators(tg, options.fir_taps, options, m);
+    return m;
+  }
+  return best_fir_length(m, tg, options);
+}
+
+}  // namespace
+
+DiscreteModel discretise(const Order& order, const Eigen::VectorXd& theta, double fs_hz,
+                         const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
+  if (options.fold_factor > 0.0) return discretise_with_fold(order, theta, fs_hz, data_f_hz, options);
+  // Automatic folding: the best of three fold factors.
+  DiscreteModel best;
+  bool have = false;
+  for (double factor : {4.0, 0.5, 0.25}) {
+    DiscretiseOptions o = options;
+    o.fold_factor = factor;
+    DiscreteModel m = discretise_with_fold(order, theta, fs_hz, data_f_hz, o);
+    if (better(m, have ? &best : nullptr, options)) best = std::move(m), have = true;
   }
   return best;
 }

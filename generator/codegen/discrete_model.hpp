@@ -65,7 +65,9 @@ struct DiscreteModel {
   double h0() const;
   /// H(e^{j2πf/fs}).
   std::complex<double> response(double f_hz) const;
-  /// Output for input u, in double precision (the reference every format is compared with).
+  /// Output for input u in double precision: the exact-arithmetic reference every format is compared with
+  /// (the runtime has no double kernel). The shipped float and fixed-point arithmetic is never re-implemented
+  /// here: codegen/runtime_filter.hpp runs the runtime's own kernels.
   std::vector<double> filter(const std::vector<double>& u) const;
   std::vector<double> impulse_response(int n) const;
   /// Σ|h[n]| over n < until the tail is below 1e-12 of the peak (bounds |y| for |u| ≤ 1).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "codegen/emission.hpp"
 
+#include "codegen/runtime_filter.hpp"
 #include "codegen/template_text.hpp"
 #include "core/errors.hpp"
 #include "core/rng.hpp"
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <regex>
@@ -75,46 +77,90 @@ std::string pair_note(const PairTerm& p, double fs) {
                      p.beta / (2 * kPi), p.alpha / fs);
 }
 
+/// The C text of one table row (width entries from `row`).
+template <typename T, typename Print>
+std::string row_text(const T* row, std::size_t width, Print print) {
+  std::vector<std::string> v;
+  for (std::size_t j = 0; j < width; ++j) v.push_back(print(row[j]));
+  return join(v, ", ");
+}
+
+/// The emitted tables of one rate in the runtime's layout (runtime_filter.hpp), their entries as C text.
+struct TableText {
+  std::vector<std::string> fir, real, pair;  ///< fir: one entry per tap; real, pair: one row per term
+  std::size_t real_width = 0, pair_width = 0;
+};
+
+template <typename Model, typename Print>
+TableText table_text(const Model& tables, std::size_t real_width, std::size_t pair_width, Print print) {
+  TableText t;
+  t.real_width = real_width;
+  t.pair_width = pair_width;
+  for (const auto v : tables.fir()) t.fir.push_back(print(v));
+  for (std::size_t j = 0; j < tables.real().size(); j += real_width) t.real.push_back(row_text(&tables.real()[j], real_width, print));
+  for (std::size_t j = 0; j < tables.pair().size(); j += pair_width) t.pair.push_back(row_text(&tables.pair()[j], pair_width, print));
+  return t;
+}
+
+TableText emitted_tables(const EmittedRate& r, Format format) {
+  const auto integer = [](auto v) { return std::to_string(v); };
+  switch (format) {
+    case Format::f32:
+      return table_text(RuntimeModelF32(r.f32, r.fs_hz), ADMITGEN_RT_F32_REAL_WIDTH, ADMITGEN_RT_F32_PAIR_WIDTH, flit);
+    case Format::q31:
+      return table_text(RuntimeModelQ31(*r.fixed, r.fs_hz), ADMITGEN_RT_Q_REAL_WIDTH, ADMITGEN_RT_Q_PAIR_WIDTH, integer);
+    case Format::q15:
+      return table_text(RuntimeModelQ15(*r.fixed, r.fs_hz), ADMITGEN_RT_Q_REAL_WIDTH, ADMITGEN_RT_Q_PAIR_WIDTH, integer);
+  }
+  throw InternalError("unknown format");
+}
+
+/// The double-precision reference tables, in the f32 layout (RuntimeModelF32 rows, double entries).
+TableText reference_tables(const DiscreteModel& m) {
+  TableText t;
+  t.real_width = ADMITGEN_RT_F32_REAL_WIDTH;
+  t.pair_width = ADMITGEN_RT_F32_PAIR_WIDTH;
+  for (const double d : m.fir) t.fir.push_back(dlit(d));
+  for (const auto& r : m.real) {
+    std::array<double, ADMITGEN_RT_F32_REAL_WIDTH> row{};
+    row[ADMITGEN_RT_F32_REAL_EPS] = r.eps;
+    row[ADMITGEN_RT_F32_REAL_C] = r.c;
+    t.real.push_back(row_text(row.data(), row.size(), dlit));
+  }
+  for (const auto& p : m.pair) {
+    std::array<double, ADMITGEN_RT_F32_PAIR_WIDTH> row{};
+    row[ADMITGEN_RT_F32_PAIR_ER] = p.e_r;
+    row[ADMITGEN_RT_F32_PAIR_PI] = p.p_i;
+    row[ADMITGEN_RT_F32_PAIR_G] = p.g;
+    row[ADMITGEN_RT_F32_PAIR_CR] = 2.0 * p.c.real();
+    row[ADMITGEN_RT_F32_PAIR_CI] = -2.0 * p.c.imag();
+    t.pair.push_back(row_text(row.data(), row.size(), dlit));
+  }
+  return t;
+}
+
 /// Rows of the f32 / fixed / reference tables of one rate, as template lists.
 void table_lists(const EmittedRate& r, Format format, TemplateContext& c) {
   const auto& m = r.model;
+  const TableText emitted = emitted_tables(r, format), ref = reference_tables(m);
   std::vector<TemplateContext> fir, real, pair, ref_fir, ref_real, ref_pair;
   for (std::size_t k = 0; k < m.fir.size(); ++k) {
-    const std::string v = format == Format::f32 ? flit(r.f32.fir[k]) : std::to_string(r.fixed->fir[k]);
-    fir.push_back(item({{"v", v}, {"k", std::to_string(k)}}));
-    ref_fir.push_back(item({{"v", dlit(m.fir[k])}, {"k", std::to_string(k)}}));
+    fir.push_back(item({{"v", emitted.fir[k]}, {"k", std::to_string(k)}}));
+    ref_fir.push_back(item({{"v", ref.fir[k]}, {"k", std::to_string(k)}}));
   }
   for (std::size_t q = 0; q < m.real.size(); ++q) {
-    std::string v;
-    if (format == Format::f32) {
-      v = fmt::format("{}, {}", flit(r.f32.real[q][0]), flit(r.f32.real[q][1]));
-    } else {
-      const auto& t = r.fixed->real[q];
-      v = fmt::format("{}, {}, {}", t.eps, t.shift, t.c);
-    }
-    real.push_back(item({{"v", v}, {"note", real_note(m.real[q], r.fs_hz)}}));
-    ref_real.push_back(item({{"v", fmt::format("{}, {}", dlit(m.real[q].eps), dlit(m.real[q].c))}}));
+    real.push_back(item({{"v", emitted.real[q]}, {"note", real_note(m.real[q], r.fs_hz)}}));
+    ref_real.push_back(item({{"v", ref.real[q]}}));
   }
   for (std::size_t s = 0; s < m.pair.size(); ++s) {
-    std::string v;
-    if (format == Format::f32) {
-      const auto& p = r.f32.pair[s];
-      v = fmt::format("{}, {}, {}, {}, {}", flit(p[0]), flit(p[1]), flit(p[2]), flit(p[3]), flit(p[4]));
-    } else {
-      const auto& t = r.fixed->pair[s];
-      v = fmt::format("{}, {}, {}, {}, {}, {}", t.e_r, t.p_i, t.g, t.shift, t.c_r, t.c_i);
-    }
-    pair.push_back(item({{"v", v}, {"note", pair_note(m.pair[s], r.fs_hz)}}));
-    const auto& p = m.pair[s];
-    ref_pair.push_back(item({{"v", fmt::format("{}, {}, {}, {}, {}", dlit(p.e_r), dlit(p.p_i), dlit(p.g),
-                                               dlit(2.0 * p.c.real()), dlit(-2.0 * p.c.imag()))}}));
+    pair.push_back(item({{"v", emitted.pair[s]}, {"note", pair_note(m.pair[s], r.fs_hz)}}));
+    ref_pair.push_back(item({{"v", ref.pair[s]}}));
   }
-  const std::size_t real_width = format == Format::f32 ? 2 : 3, pair_width = format == Format::f32 ? 5 : 6;
   c.values["fir_len"] = std::to_string(std::max<std::size_t>(1, m.fir.size()));
-  c.values["real_len"] = std::to_string(std::max<std::size_t>(1, real_width * m.real.size()));
-  c.values["pair_len"] = std::to_string(std::max<std::size_t>(1, pair_width * m.pair.size()));
-  c.values["ref_real_len"] = std::to_string(std::max<std::size_t>(1, 2 * m.real.size()));
-  c.values["ref_pair_len"] = std::to_string(std::max<std::size_t>(1, 5 * m.pair.size()));
+  c.values["real_len"] = std::to_string(std::max<std::size_t>(1, emitted.real_width * m.real.size()));
+  c.values["pair_len"] = std::to_string(std::max<std::size_t>(1, emitted.pair_width * m.pair.size()));
+  c.values["ref_real_len"] = std::to_string(std::max<std::size_t>(1, ref.real_width * m.real.size()));
+  c.values["ref_pair_len"] = std::to_string(std::max<std::size_t>(1, ref.pair_width * m.pair.size()));
   c.lists["fir"] = fir;
   c.lists["real"] = real;
   c.lists["pair"] = pair;
@@ -145,12 +191,12 @@ TemplateContext rate_context(const EmittedRate& r, Format format) {
   c.values["ref_h0"] = dlit(m.h0());
   if (format == Format::f32) {
     c.values["l1"] = fmt::format("{:.6g}", m.l1_norm());
-    c.values["model_scalars"] = flit(r.f32.h0);
+    c.lists["f32_model"] = {item({{"h0", flit(r.f32.h0)}})};
     c.lists["fixed_doc"] = {};
   } else {
     const auto& q = *r.fixed;
     c.values["l1"] = fmt::format("{:.6g}", q.l1_norm);
-    c.values["model_scalars"] = fmt::format("{}, {}", q.out_shift, q.acc_shift);
+    c.lists["f32_model"] = {};
     c.lists["fixed_doc"] = {item({{"out_shift", std::to_string(q.out_shift)},
                                   {"y_exp", std::to_string(q.y_exp)},
                                   {"acc_shift", std::to_string(q.acc_shift)},
@@ -405,7 +451,7 @@ std::string golden_vectors(const Emission& e, std::uint64_t seed) {
   for (int n = 0; n < 512; ++n)
     in.push_back(static_cast<std::int32_t>(std::floor((rng.uniform() - 0.5) * (double(full) + 1.0))));
   in.resize(in.size() + 256, 0);
-  const auto out = run_fixed(q, in);
+  const auto out = run_runtime(q, r.fs_hz, in);
   std::string s = fmt::format(
       "# admitgen golden vectors (bit-exact), format {}, fs {} Hz, model {} ({}), admitgen {}\n"
       "# fit input sha256 {}, noise seed {}\n"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "simulation/impedance_tube_fdtd.hpp"
 
-#include "admitgen_rt.h"
+#include "codegen/runtime_filter.hpp"
 #include "core/errors.hpp"
 #include "physics/two_microphone.hpp"
 
@@ -24,28 +24,6 @@ using cd = std::complex<double>;
 /// (inputs beyond it are clipped and counted: TubeSimulationResult::saturated_inputs).
 constexpr double kDriveAmplitude = 0.3;
 
-/// Caller-owned, ADMITGEN_RT_ALIGN-aligned state memory for one runtime instance.
-class StateMemory {
- public:
-  explicit StateMemory(std::size_t bytes) : bytes_(bytes), raw_(new std::byte[bytes + ADMITGEN_RT_ALIGN]) {
-    void* p = raw_.get();
-    std::size_t space = bytes + ADMITGEN_RT_ALIGN;
-    data_ = std::align(ADMITGEN_RT_ALIGN, bytes, p, space);
-  }
-  void* data() const { return data_; }
-  std::size_t bytes() const { return bytes_; }
-
- private:
-  std::size_t bytes_;
-  std::unique_ptr<std::byte[]> raw_;
-  void* data_ = nullptr;
-};
-
-void require(admitgen_rt_result r, const char* what) {
-  if (r != ADMITGEN_RT_SUCCESS)
-    throw InputError(fmt::format("the runtime refuses the emitted tables ({}): {}", what, admitgen_rt_result_description(r)));
-}
-
 /// One wall node terminated by the C runtime: y^{n} = h0 u^n + s^{n−1}.
 class RuntimeWall {
  public:
@@ -62,65 +40,26 @@ class RuntimeWall {
 
 class WallF32 final : public RuntimeWall {
  public:
-  WallF32(const codegen::FloatCoefficients& c, int fs) : fir_(c.fir) {
-    for (const auto& t : c.real) real_.insert(real_.end(), t.begin(), t.end());
-    for (const auto& t : c.pair) pair_.insert(pair_.end(), t.begin(), t.end());
-    model_ = {ADMITGEN_RT_ABI_VERSION, fs, ADMITGEN_RT_METHOD_MATCHED_EXP, static_cast<int32_t>(fir_.size()),
-              static_cast<int32_t>(c.real.size()), static_cast<int32_t>(c.pair.size()), c.h0, fir_.data(),
-              real_.data(), pair_.data()};
-    mem_ = std::make_unique<StateMemory>(admitgen_rt_state_bytes_f32(&model_, 1));
-    require(admitgen_rt_init_f32(&inst_, &model_, fs, 1, mem_->data(), mem_->bytes()), "f32");
-  }
-  double h0() const override { return model_.h0; }
-  double history() override {
-    float s = 0.0f;
-    admitgen_rt_history_f32(&inst_, &s);
-    return s;
-  }
-  double commit(double p) override {
-    const float u = static_cast<float>(p);
-    float y = 0.0f;
-    admitgen_rt_commit_f32(&inst_, &u, &y);
-    return y;
-  }
+  WallF32(const codegen::FloatCoefficients& c, int fs) : node_(c, fs), h0_(c.h0) {}
+  double h0() const override { return h0_; }
+  double history() override { return node_.history(); }
+  double commit(double p) override { return node_.commit(static_cast<float>(p)); }
 
  private:
-  std::vector<float> fir_, real_, pair_;
-  admitgen_rt_model_f32 model_{};
-  std::unique_ptr<StateMemory> mem_;
-  admitgen_rt_f32 inst_{};
+  codegen::RuntimeNodeF32 node_;
+  double h0_;
 };
 
-/// q31 (T = int32_t) or q15 (T = int16_t): the runtime's history/commit pair (history = the output of a
-/// u = 0 frame, bit-exact, state untouched).
-template <typename T, typename Model, typename Inst, int B>
+/// q31 (T = int32_t, B = 31) or q15 (T = int16_t, B = 15): the runtime's history/commit pair (history = the
+/// output of a u = 0 frame, bit-exact, state untouched).
+template <typename T, int B>
 class WallFixed final : public RuntimeWall {
  public:
-  using Bytes = std::size_t (*)(const Model*, int32_t);
-  using Init = admitgen_rt_result (*)(Inst*, const Model*, int32_t, int32_t, void*, std::size_t);
-  using History = admitgen_rt_result (*)(const Inst*, T*);
-  using Commit = admitgen_rt_result (*)(Inst*, const T*, T*);
-
-  WallFixed(const codegen::FixedCoefficients& c, int fs, Bytes bytes, Init init, History history, Commit commit)
-      : history_(history), commit_(commit), out_scale_(std::ldexp(1.0, c.out_shift - B)), h0_(c.dequantised(fs).h0()) {
-    for (auto d : c.fir) fir_.push_back(static_cast<T>(d));
-    for (const auto& t : c.real) real_.insert(real_.end(), {static_cast<T>(t.eps), static_cast<T>(t.shift), static_cast<T>(t.c)});
-    for (const auto& t : c.pair)
-      pair_.insert(pair_.end(), {static_cast<T>(t.e_r), static_cast<T>(t.p_i), static_cast<T>(t.g), static_cast<T>(t.shift),
-                                 static_cast<T>(t.c_r), static_cast<T>(t.c_i)});
-    model_ = {ADMITGEN_RT_ABI_VERSION, fs, ADMITGEN_RT_METHOD_MATCHED_EXP, static_cast<int32_t>(fir_.size()),
-              static_cast<int32_t>(c.real.size()), static_cast<int32_t>(c.pair.size()), c.out_shift, c.acc_shift,
-              fir_.data(), real_.data(), pair_.data()};
-    mem_ = std::make_unique<StateMemory>(bytes(&model_, 1));
-    require(init(&inst_, &model_, fs, 1, mem_->data(), mem_->bytes()), "fixed point");
-  }
+  WallFixed(const codegen::FixedCoefficients& c, int fs)
+      : node_(c, fs), out_scale_(std::ldexp(1.0, c.out_shift - B)), h0_(c.dequantised(fs).h0()) {}
   double h0() const override { return h0_; }
   double quantum() const override { return std::max(out_scale_, std::ldexp(1.0, -B)); }
-  double history() override {
-    T s = 0;
-    history_(&inst_, &s);
-    return static_cast<double>(s) * out_scale_;
-  }
+  double history() override { return static_cast<double>(node_.history()) * out_scale_; }
   double commit(double p) override {
     constexpr double full = static_cast<double>(std::int64_t{1} << B);
     double q = std::nearbyint(p * full);
@@ -128,20 +67,12 @@ class WallFixed final : public RuntimeWall {
       ++saturated;
       q = std::clamp(q, -full, full - 1.0);
     }
-    const T u = static_cast<T>(q);
-    T y = 0;
-    commit_(&inst_, &u, &y);
-    return static_cast<double>(y) * out_scale_;
+    return static_cast<double>(node_.commit(static_cast<T>(q))) * out_scale_;
   }
 
  private:
-  History history_;
-  Commit commit_;
+  codegen::RuntimeNode<T> node_;
   double out_scale_, h0_;
-  std::vector<T> fir_, real_, pair_;
-  Model model_{};
-  std::unique_ptr<StateMemory> mem_;
-  Inst inst_{};
 };
 
 std::unique_ptr<RuntimeWall> runtime_wall(const codegen::EmittedRate& rate, codegen::Format format) {
@@ -150,14 +81,10 @@ std::unique_ptr<RuntimeWall> runtime_wall(const codegen::EmittedRate& rate, code
       return std::make_unique<WallF32>(rate.f32, rate.fs_hz);
     case codegen::Format::q31:
       if (!rate.fixed) break;
-      return std::make_unique<WallFixed<int32_t, admitgen_rt_model_q31, admitgen_rt_q31, 31>>(
-          *rate.fixed, rate.fs_hz, admitgen_rt_state_bytes_q31, admitgen_rt_init_q31, admitgen_rt_history_q31,
-          admitgen_rt_commit_q31);
+      return std::make_unique<WallFixed<std::int32_t, 31>>(*rate.fixed, rate.fs_hz);
     case codegen::Format::q15:
       if (!rate.fixed) break;
-      return std::make_unique<WallFixed<int16_t, admitgen_rt_model_q15, admitgen_rt_q15, 15>>(
-          *rate.fixed, rate.fs_hz, admitgen_rt_state_bytes_q15, admitgen_rt_init_q15, admitgen_rt_history_q15,
-          admitgen_rt_commit_q15);
+      return std::make_unique<WallFixed<std::int16_t, 15>>(*rate.fixed, rate.fs_hz);
   }
   throw InputError(fmt::format("no {} tables were emitted for {} Hz", codegen::format_name(format), rate.fs_hz));
 }

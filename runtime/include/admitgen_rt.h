@@ -42,7 +42,7 @@
  *
  * Formats: _f32 (float), _q31 (Q1.31 = TI Q0.31 data), _q15 (Q1.15 data). The fixed-point kernels keep
  * Q1.31 states for both formats, 64-bit accumulators, per-term coefficient exponents and saturating
- * stores; see their "Scaling and Overflow Behavior" paragraphs below.
+ * stores; their scaling, bounds and rounding are stated in docs/runtime.md, "Q formats and rounding".
  * Denormals: decaying float states become subnormal; set FTZ/DAZ in the audio thread (as miniaudio and
  * Steam Audio do) if the platform is slow on subnormals.
  */
@@ -120,8 +120,46 @@ const char *admitgen_rt_result_description(admitgen_rt_result result);
 /* ------------------------------------------------------------------------------------------------ */
 /* Models: filled by generated headers as static const data (place them in flash/ROM).                */
 
-/** Float model. Coefficient ordering: fir {d_0..d_{n_fir-1}}; real {eps, c} per pole;
- *  pair {e_r, p_i, g, cr, ci} per pair (cr = 2 Re c, ci = -2 Im c). */
+/* Coefficient tables: the one definition of their layout. fir holds d_0..d_{n_fir-1}; real holds one row of
+ * ADMITGEN_RT_*_REAL_WIDTH entries per real pole and pair one row of ADMITGEN_RT_*_PAIR_WIDTH entries per
+ * pair, entry j of row t at [WIDTH * t + j]; the index macros name j. cr = 2 Re c, ci = -2 Im c. Fixed-point
+ * scaling of each entry: docs/runtime.md, "Q formats and rounding". */
+/** f32 real pole row {eps, c}. */
+#define ADMITGEN_RT_F32_REAL_WIDTH 2
+#define ADMITGEN_RT_F32_REAL_EPS 0
+#define ADMITGEN_RT_F32_REAL_C 1
+/** f32 pair row {e_r, p_i, g, cr, ci}. */
+#define ADMITGEN_RT_F32_PAIR_WIDTH 5
+#define ADMITGEN_RT_F32_PAIR_ER 0
+#define ADMITGEN_RT_F32_PAIR_PI 1
+#define ADMITGEN_RT_F32_PAIR_G 2
+#define ADMITGEN_RT_F32_PAIR_CR 3
+#define ADMITGEN_RT_F32_PAIR_CI 4
+/** q31/q15 real pole row {eps mantissa, shift, c mantissa}. */
+#define ADMITGEN_RT_Q_REAL_WIDTH 3
+#define ADMITGEN_RT_Q_REAL_EPS 0
+#define ADMITGEN_RT_Q_REAL_SHIFT 1
+#define ADMITGEN_RT_Q_REAL_C 2
+/** q31/q15 pair row {e_r, p_i, g, shift, cr, ci} (mantissas, shift the term's exponent). */
+#define ADMITGEN_RT_Q_PAIR_WIDTH 6
+#define ADMITGEN_RT_Q_PAIR_ER 0
+#define ADMITGEN_RT_Q_PAIR_PI 1
+#define ADMITGEN_RT_Q_PAIR_G 2
+#define ADMITGEN_RT_Q_PAIR_SHIFT 3
+#define ADMITGEN_RT_Q_PAIR_CR 4
+#define ADMITGEN_RT_Q_PAIR_CI 5
+
+/** Names a field in a model initialiser (generated headers fill every field by name):
+ *  ADMITGEN_RT_FIELD(n_fir) 6 is the designated initialiser .n_fir = 6 in C99 and C++20, where the compiler
+ *  checks the name (C++20 also the order). C++ before C++20 has no designated initialisers: there it is the
+ *  positional 6, in declaration order, which the C++20 build of the runtime tests proves. */
+#if !defined(__cplusplus) || __cplusplus >= 202002L
+#define ADMITGEN_RT_FIELD(name) .name =
+#else
+#define ADMITGEN_RT_FIELD(name)
+#endif
+
+/** Float model; tables in the f32 layout above. */
 typedef struct admitgen_rt_model_f32 {
   uint32_t abi_version; /**< ADMITGEN_RT_ABI_VERSION of the generator */
   int32_t fs_hz;        /**< the only sample rate these coefficients are valid for */
@@ -133,11 +171,11 @@ typedef struct admitgen_rt_model_f32 {
   const float *pair;
 } admitgen_rt_model_f32;
 
-/** Q31 model. B = 31. Ordering: fir {d_k}; real {eps, shift, c}; pair {e_r, p_i, g, shift, cr, ci}.
- *  State-update coefficients: value = mantissa * 2^-(31 + shift), one shift per term (delta form:
- *  eps keeps 31 significant bits however small lambda*T is). Output table (fir, c, cr, ci): value =
- *  mantissa * 2^(y_exp - 31) with one exponent for the table; the kernel only needs
- *  acc_shift = 31 + out_shift - y_exp. Output y_q31 represents y * 2^-out_shift. */
+/** Q31 model (B = 31); tables in the q layout above. State-update coefficients: value =
+ *  mantissa * 2^-(31 + shift), one shift per term (delta form: eps keeps 31 significant bits however small
+ *  lambda*T is). Output table (fir, c, cr, ci): value = mantissa * 2^(y_exp - 31) with one exponent for the
+ *  table; the kernel only needs acc_shift = 31 + out_shift - y_exp. Output y_q31 represents
+ *  y * 2^-out_shift. */
 typedef struct admitgen_rt_model_q31 {
   uint32_t abi_version;
   int32_t fs_hz;
@@ -221,8 +259,8 @@ admitgen_rt_result admitgen_rt_history_f32(const admitgen_rt_f32 *inst, float *p
 admitgen_rt_result admitgen_rt_commit_f32(admitgen_rt_f32 *inst, const float *pU, float *pY);
 
 /* ------------------------------------------------------------------------------------------------ */
-/* q31 / q15: same lifecycle. Scaling and Overflow Behavior is documented in the kernel sources and
- * repeated in every generated header next to the tables.                                             */
+/* q31 / q15: same lifecycle. Scaling and Overflow Behavior: docs/runtime.md, "Q formats and rounding"
+ * (summarised in every generated header next to the tables).                                          */
 
 size_t admitgen_rt_state_bytes_q31(const admitgen_rt_model_q31 *model, int32_t n_nodes);
 ADMITGEN_RT_NODISCARD admitgen_rt_result admitgen_rt_init_q31(admitgen_rt_q31 *inst, const admitgen_rt_model_q31 *model,

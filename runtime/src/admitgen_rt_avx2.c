@@ -52,7 +52,8 @@ static void admitgen_rt__fblock_avx2(const admitgen_rt_f32 *inst, const float *i
     for (h = 0; h < ADMITGEN_RT_FVH; ++h) acc[h] = _mm256_add_ps(acc[h], _mm256_mul_ps(d, _mm256_loadu_ps(row + 8 * h)));
   }
   for (t = 0; t < m->n_real; ++t) {
-    const __m256 eps = _mm256_set1_ps(m->real[2 * t]), c = _mm256_set1_ps(m->real[2 * t + 1]);
+    const __m256 eps = _mm256_set1_ps(m->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_EPS]);
+    const __m256 c = _mm256_set1_ps(m->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_C]);
     float *x = inst->x + (size_t)t * n + b;
     for (h = 0; h < ADMITGEN_RT_FVH; ++h) {
       const __m256 v = admitgen_rt__vreal(_mm256_loadu_ps(x + 8 * h), u[h], eps);
@@ -61,9 +62,9 @@ static void admitgen_rt__fblock_avx2(const admitgen_rt_f32 *inst, const float *i
     }
   }
   for (t = 0; t < m->n_pair; ++t) {
-    const float *p = m->pair + 5 * t;
-    const __m256 er = _mm256_set1_ps(p[0]), pi = _mm256_set1_ps(p[1]), g = _mm256_set1_ps(p[2]);
-    const __m256 cr = _mm256_set1_ps(p[3]), ci = _mm256_set1_ps(p[4]);
+    const float *p = m->pair + ADMITGEN_RT_F32_PAIR_WIDTH * t;
+    const __m256 er = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_ER]), pi = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_PI]), g = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_G]);
+    const __m256 cr = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_CR]), ci = _mm256_set1_ps(p[ADMITGEN_RT_F32_PAIR_CI]);
     float *xi = inst->xi + (size_t)t * n + b, *eta = inst->eta + (size_t)t * n + b;
     for (h = 0; h < ADMITGEN_RT_FVH; ++h) {
       const __m256 a = _mm256_loadu_ps(xi + 8 * h), e = _mm256_loadu_ps(eta + 8 * h);

@@ -196,10 +196,6 @@ void admitgen_rt__qcall(const admitgen_rt__qtab *t, int32_t *x, int32_t *xi, int
 /* |v| as an unsigned 64-bit value (defined for INT32_MIN). */
 static uint64_t admitgen_rt__abs64(int32_t v) { return v < 0 ? (uint64_t)(-(int64_t)v) : (uint64_t)v; }
 
-/* Entry j of a term table row (q31 or q15), as read by admitgen_rt__qreal/qpair. */
-static int32_t admitgen_rt__qentry(const int32_t *t32, const int16_t *t16, int32_t width, int32_t term, int32_t j) {
-  return t32 != NULL ? t32[width * term + j] : (int32_t)t16[width * term + j];
-}
 
 /* A term's total shift bits + shift within 1..62 (tested before the sum is formed: no overflow). */
 static int admitgen_rt__valid_term_shift(int32_t bits, int32_t shift) { return shift >= 1 - bits && shift <= 62 - bits; }
@@ -213,17 +209,18 @@ admitgen_rt_result admitgen_rt__check_qmodel(const admitgen_rt__qtab *t) {
   if (t->acc_shift < 1 || t->acc_shift > 62) return ADMITGEN_RT_BAD_MODEL;
   for (k = 0; k < t->n_fir; ++k) out += admitgen_rt__abs64(admitgen_rt__qfir(t, k));
   for (k = 0; k < t->n_real; ++k) {
-    if (!admitgen_rt__valid_term_shift(t->bits, admitgen_rt__qentry(t->real32, t->real16, 3, k, 1))) return ADMITGEN_RT_BAD_MODEL;
-    out += admitgen_rt__abs64(admitgen_rt__qentry(t->real32, t->real16, 3, k, 2));
+    if (!admitgen_rt__valid_term_shift(t->bits, admitgen_rt__qreal_entry(t, k, ADMITGEN_RT_Q_REAL_SHIFT))) return ADMITGEN_RT_BAD_MODEL;
+    out += admitgen_rt__abs64(admitgen_rt__qreal_entry(t, k, ADMITGEN_RT_Q_REAL_C));
   }
   for (k = 0; k < t->n_pair; ++k) {
     uint64_t update = 0u;
-    int32_t j;
-    if (!admitgen_rt__valid_term_shift(t->bits, admitgen_rt__qentry(t->pair32, t->pair16, 6, k, 3))) return ADMITGEN_RT_BAD_MODEL;
-    for (j = 0; j < 3; ++j) update += admitgen_rt__abs64(admitgen_rt__qentry(t->pair32, t->pair16, 6, k, j));
+    if (!admitgen_rt__valid_term_shift(t->bits, admitgen_rt__qpair_entry(t, k, ADMITGEN_RT_Q_PAIR_SHIFT))) return ADMITGEN_RT_BAD_MODEL;
+    update += admitgen_rt__abs64(admitgen_rt__qpair_entry(t, k, ADMITGEN_RT_Q_PAIR_ER));
+    update += admitgen_rt__abs64(admitgen_rt__qpair_entry(t, k, ADMITGEN_RT_Q_PAIR_PI));
+    update += admitgen_rt__abs64(admitgen_rt__qpair_entry(t, k, ADMITGEN_RT_Q_PAIR_G));
     if (update > limit) return ADMITGEN_RT_BAD_MODEL;
-    out += admitgen_rt__abs64(admitgen_rt__qentry(t->pair32, t->pair16, 6, k, 4)) +
-           admitgen_rt__abs64(admitgen_rt__qentry(t->pair32, t->pair16, 6, k, 5));
+    out += admitgen_rt__abs64(admitgen_rt__qpair_entry(t, k, ADMITGEN_RT_Q_PAIR_CR)) +
+           admitgen_rt__abs64(admitgen_rt__qpair_entry(t, k, ADMITGEN_RT_Q_PAIR_CI));
   }
   return out > limit ? ADMITGEN_RT_BAD_MODEL : ADMITGEN_RT_SUCCESS;
 }

@@ -155,25 +155,30 @@ typedef struct admitgen_rt__qreal_coef {
 typedef struct admitgen_rt__qpair_coef {
   int32_t er, pi, g, s, cr, ci;
 } admitgen_rt__qpair_coef;
+/* Entry j (an ADMITGEN_RT_Q_* index) of real pole / pair q's row, from either table type. */
+static inline int32_t admitgen_rt__qreal_entry(const admitgen_rt__qtab *t, int32_t q, int32_t j) {
+  const int32_t at = ADMITGEN_RT_Q_REAL_WIDTH * q + j;
+  return t->real32 != NULL ? t->real32[at] : (int32_t)t->real16[at];
+}
+static inline int32_t admitgen_rt__qpair_entry(const admitgen_rt__qtab *t, int32_t q, int32_t j) {
+  const int32_t at = ADMITGEN_RT_Q_PAIR_WIDTH * q + j;
+  return t->pair32 != NULL ? t->pair32[at] : (int32_t)t->pair16[at];
+}
 static inline admitgen_rt__qreal_coef admitgen_rt__qreal(const admitgen_rt__qtab *t, int32_t q) {
   admitgen_rt__qreal_coef r;
-  int32_t v[3], j;
-  for (j = 0; j < 3; ++j) v[j] = t->real32 != NULL ? t->real32[3 * q + j] : (int32_t)t->real16[3 * q + j];
-  r.m = v[0];
-  r.s = t->bits + v[1];
-  r.c = v[2];
+  r.m = admitgen_rt__qreal_entry(t, q, ADMITGEN_RT_Q_REAL_EPS);
+  r.s = t->bits + admitgen_rt__qreal_entry(t, q, ADMITGEN_RT_Q_REAL_SHIFT);
+  r.c = admitgen_rt__qreal_entry(t, q, ADMITGEN_RT_Q_REAL_C);
   return r;
 }
 static inline admitgen_rt__qpair_coef admitgen_rt__qpair(const admitgen_rt__qtab *t, int32_t q) {
   admitgen_rt__qpair_coef p;
-  int32_t v[6], j;
-  for (j = 0; j < 6; ++j) v[j] = t->pair32 != NULL ? t->pair32[6 * q + j] : (int32_t)t->pair16[6 * q + j];
-  p.er = v[0];
-  p.pi = v[1];
-  p.g = v[2];
-  p.s = t->bits + v[3];
-  p.cr = v[4];
-  p.ci = v[5];
+  p.er = admitgen_rt__qpair_entry(t, q, ADMITGEN_RT_Q_PAIR_ER);
+  p.pi = admitgen_rt__qpair_entry(t, q, ADMITGEN_RT_Q_PAIR_PI);
+  p.g = admitgen_rt__qpair_entry(t, q, ADMITGEN_RT_Q_PAIR_G);
+  p.s = t->bits + admitgen_rt__qpair_entry(t, q, ADMITGEN_RT_Q_PAIR_SHIFT);
+  p.cr = admitgen_rt__qpair_entry(t, q, ADMITGEN_RT_Q_PAIR_CR);
+  p.ci = admitgen_rt__qpair_entry(t, q, ADMITGEN_RT_Q_PAIR_CI);
   return p;
 }
 

@@ -37,7 +37,7 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
       for (j = 0; j < nb; ++j) acc[j] += d * row[j];
     }
     for (t = 0; t < m->n_real; ++t) {
-      const float eps = m->real[2 * t], c = m->real[2 * t + 1];
+      const float eps = m->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_EPS], c = m->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_C];
       float *x = inst->x + (size_t)t * n + (size_t)b;
       for (j = 0; j < nb; ++j) {
         const float v = admitgen_rt__real_f32(x[j], u[j], eps);
@@ -46,16 +46,16 @@ void admitgen_rt__frame_f32_generic(const admitgen_rt_f32 *inst, const float *in
       }
     }
     for (t = 0; t < m->n_pair; ++t) {
-      const float *p = m->pair + 5 * t;
+      const float *p = m->pair + ADMITGEN_RT_F32_PAIR_WIDTH * t;
       float *xi = inst->xi + (size_t)t * n + (size_t)b, *eta = inst->eta + (size_t)t * n + (size_t)b;
       for (j = 0; j < nb; ++j) {
-        const float a1 = admitgen_rt__xi_f32(xi[j], eta[j], u[j], p[0], p[1], p[2]);
-        const float e1 = admitgen_rt__eta_f32(xi[j], eta[j], p[0], p[1]);
+        const float a1 = admitgen_rt__xi_f32(xi[j], eta[j], u[j], p[ADMITGEN_RT_F32_PAIR_ER], p[ADMITGEN_RT_F32_PAIR_PI], p[ADMITGEN_RT_F32_PAIR_G]);
+        const float e1 = admitgen_rt__eta_f32(xi[j], eta[j], p[ADMITGEN_RT_F32_PAIR_ER], p[ADMITGEN_RT_F32_PAIR_PI]);
         if (commit) {
           xi[j] = a1;
           eta[j] = e1;
         }
-        acc[j] += p[3] * a1 + p[4] * e1;
+        acc[j] += p[ADMITGEN_RT_F32_PAIR_CR] * a1 + p[ADMITGEN_RT_F32_PAIR_CI] * e1;
       }
     }
     if (out != NULL)
@@ -82,21 +82,21 @@ typedef struct admitgen_rt__pterm {
 static admitgen_rt__rterm admitgen_rt__rterm_at(const admitgen_rt_f32 *inst, int32_t t, int32_t i) {
   admitgen_rt__rterm r;
   r.x = inst->x + (size_t)t * (size_t)inst->n_nodes + (size_t)i;
-  r.eps = inst->model->real[2 * t];
-  r.c = inst->model->real[2 * t + 1];
+  r.eps = inst->model->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_EPS];
+  r.c = inst->model->real[ADMITGEN_RT_F32_REAL_WIDTH * t + ADMITGEN_RT_F32_REAL_C];
   return r;
 }
 
 static admitgen_rt__pterm admitgen_rt__pterm_at(const admitgen_rt_f32 *inst, int32_t t, int32_t i) {
-  const float *p = inst->model->pair + 5 * t;
+  const float *p = inst->model->pair + ADMITGEN_RT_F32_PAIR_WIDTH * t;
   admitgen_rt__pterm q;
   q.xi = inst->xi + (size_t)t * (size_t)inst->n_nodes + (size_t)i;
   q.eta = inst->eta + (size_t)t * (size_t)inst->n_nodes + (size_t)i;
-  q.er = p[0];
-  q.pi = p[1];
-  q.g = p[2];
-  q.cr = p[3];
-  q.ci = p[4];
+  q.er = p[ADMITGEN_RT_F32_PAIR_ER];
+  q.pi = p[ADMITGEN_RT_F32_PAIR_PI];
+  q.g = p[ADMITGEN_RT_F32_PAIR_G];
+  q.cr = p[ADMITGEN_RT_F32_PAIR_CR];
+  q.ci = p[ADMITGEN_RT_F32_PAIR_CI];
   return q;
 }
 

@@ -4,19 +4,12 @@
  * admitgen_rt_fixed.c and the vector kernels).
  *
  * @par Scaling and Overflow Behavior
- *   Input and output are Q1.31. States are int32 Q1.31
- *   and normalised by the generator so that |state| <= max|u| < 1: they cannot overflow (stores are
- *   saturated anyway). State-update coefficients are 31-bit mantissas with a per-term exponent
- *   (value = m * 2^-(31 + shift)); a term's update sum_j m_j v_j is formed exactly in 64 bits (the
- *   generator keeps sum_j |m_j| < 2^31, so |sum| < 2^62) and rounded toward zero of the new state
- *   (magnitude truncation: zero input decays to exactly 0, no limit cycle). The output table (FIR taps and
- *   output coefficients, one exponent, sum |m| < 2^31) is accumulated in 64 bits without loss
- *   (|acc| < 2^62), then shifted right by acc_shift with round-half-up and saturated to Q1.31. The
- *   output represents y * 2^-out_shift with 2^out_shift >= L1 norm of the impulse response, so a
- *   full-scale input of any sign pattern cannot saturate it.
+ *   Q1.31 data, Q1.31 states, every product and sum exact in 64 bits, state updates rounded
+ *   toward zero, output rounded half up and saturated: stated once in docs/runtime.md, "Q formats and
+ *   rounding"; the bounds the kernel relies on are checked at init (admitgen_rt__check_qmodel).
  * @par Coefficient and State Ordering
- *   fir {d_0..d_{n_fir-1}}; real {eps, shift, c} per pole; pair {e_r, p_i, g, shift, cr, ci} per pair.
- *   State arrays [term][node] as in admitgen_rt_init_q31.c.
+ *   Tables: the ADMITGEN_RT_Q_* layout of admitgen_rt.h. State arrays [term][node] as in
+ *   admitgen_rt_init_q31.c.
  */
 #include "admitgen_rt_internal.h"
 

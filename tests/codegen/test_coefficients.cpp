@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Quantisation (codegen/coefficients.hpp): per-term exponents, output scaling, the bit-exact integer model.
+// Quantisation (codegen/coefficients.hpp): per-term exponents, output scaling; the runtime's fixed-point
+// kernels (codegen/runtime_filter.hpp) against double precision and against an independent integer oracle.
 #include "codegen/coefficients.hpp"
+#include "codegen/fixed_point_oracle.hpp"
+#include "codegen/runtime_filter.hpp"
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 
@@ -57,7 +60,7 @@ TEST_CASE("output scaling: 2^out_shift bounds the L1 norm - mantissa sums fit th
   }
 }
 
-TEST_CASE("integer model: SNR against double, exact decay to zero, no limit cycle") {
+TEST_CASE("runtime q31 kernel: SNR against double, exact decay to zero, no limit cycle") {
   const DiscreteModel m = test_model();
   const FixedCoefficients q = quantise(m, Format::q31);
   Rng rng(3);
@@ -67,7 +70,7 @@ TEST_CASE("integer model: SNR against double, exact decay to zero, no limit cycl
     in[n] = static_cast<std::int32_t>(std::floor((rng.uniform() - 0.5) * 2147483648.0));
     u[n] = std::ldexp(double(in[n]), -31);
   }
-  const auto y = run_fixed(q, in);
+  const auto y = run_runtime(q, 48000, in);
   const auto ref = m.filter(u);
   double sig = 0.0, err = 0.0;
   for (std::size_t n = 0; n < 10000; ++n) {
@@ -80,9 +83,52 @@ TEST_CASE("integer model: SNR against double, exact decay to zero, no limit cycl
   const int bound = q.zero_decay_bound();
   std::vector<std::int32_t> tail(in.begin(), in.begin() + 10000);
   tail.resize(10000 + static_cast<std::size_t>(bound) + 10, 0);
-  const auto yt = run_fixed(q, tail);
+  const auto yt = run_runtime(q, 48000, tail);
   CHECK(yt[yt.size() - 1] == 0);
   CHECK(yt[10000 + static_cast<std::size_t>(bound)] == 0);
+}
+
+TEST_CASE("runtime fixed-point kernels match the independent integer oracle bit for bit, states included") {
+  // Random full-scale input (q15: every int16 value is a valid input, including -2^15), from zero state and
+  // from full-scale states (the limit-cycle check's start); outputs and final states must be identical.
+  const DiscreteModel m = test_model();
+  for (Format fmt : {Format::q31, Format::q15}) {
+    CAPTURE(format_name(fmt));
+    const FixedCoefficients q = quantise(m, fmt);
+    const double full = fmt == Format::q31 ? 2147483648.0 : 32768.0;
+    Rng rng(11);
+    std::vector<std::int32_t> in(5000);
+    for (auto& v : in) v = static_cast<std::int32_t>(std::floor((rng.uniform() - 0.5) * 2.0 * full));
+    in[7] = static_cast<std::int32_t>(-full);  // the most negative input
+    for (int start = 0; start < 2; ++start) {
+      test::OracleState st = test::oracle_zero_state(q);
+      std::vector<std::int32_t> runtime_out;
+      std::vector<std::int32_t> x(q.real.size()), xi(q.pair.size()), eta(q.pair.size());
+      const auto run = [&](auto& node) {
+        if (start == 1) {
+          for (std::size_t k = 0; k < q.real.size(); ++k) node.x(k) = st.x[k] = INT32_MAX;
+          for (std::size_t k = 0; k < q.pair.size(); ++k) node.xi(k) = st.xi[k] = 1518500249, node.eta(k) = st.eta[k] = -1518500249;
+        }
+        using Sample = decltype(node.history());  // int32_t (q31) or int16_t (q15)
+        const auto out = node.process(std::vector<Sample>(in.begin(), in.end()));
+        runtime_out.assign(out.begin(), out.end());
+        for (std::size_t k = 0; k < q.real.size(); ++k) x[k] = node.x(k);
+        for (std::size_t k = 0; k < q.pair.size(); ++k) xi[k] = node.xi(k), eta[k] = node.eta(k);
+      };
+      if (fmt == Format::q31) {
+        RuntimeNodeQ31 node(q, 48000);
+        run(node);
+      } else {
+        RuntimeNodeQ15 node(q, 48000);
+        run(node);
+      }
+      const auto expected = test::oracle_fixed(q, in, st);
+      CHECK(runtime_out == expected);
+      CHECK(x == st.x);
+      CHECK(xi == st.xi);
+      CHECK(eta == st.eta);
+    }
+  }
 }
 
 TEST_CASE("format names") {

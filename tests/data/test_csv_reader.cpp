@@ -8,6 +8,9 @@
 
 #include <cmath>
 #include <complex>
+#include <string>
+
+#include <unistd.h>
 
 using namespace admitgen;
 using admitgen::test::sample;
@@ -15,8 +18,11 @@ using admitgen::test::scratch_dir;
 using admitgen::test::write_text;
 
 namespace {
+// Every doctest case runs as its own CTest process, in parallel with the others: one folder per process,
+// made once (scratch_dir empties its folder, which must not remove another fixture of the same case).
 std::string fixture(const std::string& name, const std::string& text) {
-  const std::string path = scratch_dir("csv_reader") + "/" + name;
+  static const std::string dir = scratch_dir("csv_reader_" + std::to_string(::getpid()));
+  const std::string path = dir + "/" + name;
   write_text(path, text);
   return path;
 }

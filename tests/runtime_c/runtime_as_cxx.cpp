@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The C99 runtime and a generated header of every format compiled as C++ (unity build of the runtime
-// sources) with the strict warning set: engines written in C++ include them directly.
+// sources) with the strict warning set: engines written in C++ include them directly. Built as C++17 (model
+// structs filled positionally) and as C++20 (by designated initialisers, so the compiler checks the order).
 #include "../../runtime/src/admitgen_rt_avx2.c"
 #include "../../runtime/src/admitgen_rt_common.c"
 #include "../../runtime/src/admitgen_rt_fixed.c"

@@ -70,8 +70,16 @@ static const float wall_48000_f32_48000_pair[5] = {
   -0.07303311f, -0.039775014f, 0.07218015f, -5.0075164f, 0.5754608f, /* alpha = 3596.05, beta = 2058.36 1/s (327.598 Hz), alpha T = 0.07492 */
 };
 static const admitgen_rt_model_f32 wall_48000_f32_48000 = {
-  1u, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, 3, 1, 1, 0.5266256f,
-  wall_48000_f32_48000_fir, wall_48000_f32_48000_real, wall_48000_f32_48000_pair};
+  ADMITGEN_RT_FIELD(abi_version) 1u,
+  ADMITGEN_RT_FIELD(fs_hz) 48000,
+  ADMITGEN_RT_FIELD(method) ADMITGEN_RT_METHOD_MATCHED_EXP,
+  ADMITGEN_RT_FIELD(n_fir) 3,
+  ADMITGEN_RT_FIELD(n_real) 1,
+  ADMITGEN_RT_FIELD(n_pair) 1,
+  ADMITGEN_RT_FIELD(h0) 0.5266256f,
+  ADMITGEN_RT_FIELD(fir) wall_48000_f32_48000_fir,
+  ADMITGEN_RT_FIELD(real) wall_48000_f32_48000_real,
+  ADMITGEN_RT_FIELD(pair) wall_48000_f32_48000_pair};
 
 /* The model for a sample rate, or NULL when this header has none for it. */
 static inline const admitgen_rt_model_f32 *wall_48000_f32_model(int32_t fs_hz) {

@@ -85,8 +85,17 @@ static const int32_t wall_48000_q31_48000_pair[6] = {
 #define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 296
 #define WALL_48000_Q31_48000_OUT_SHIFT 1
 static const admitgen_rt_model_q31 wall_48000_q31_48000 = {
-  1u, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, 3, 1, 1, 1, 28,
-  wall_48000_q31_48000_fir, wall_48000_q31_48000_real, wall_48000_q31_48000_pair};
+  ADMITGEN_RT_FIELD(abi_version) 1u,
+  ADMITGEN_RT_FIELD(fs_hz) 48000,
+  ADMITGEN_RT_FIELD(method) ADMITGEN_RT_METHOD_MATCHED_EXP,
+  ADMITGEN_RT_FIELD(n_fir) 3,
+  ADMITGEN_RT_FIELD(n_real) 1,
+  ADMITGEN_RT_FIELD(n_pair) 1,
+  ADMITGEN_RT_FIELD(out_shift) 1,
+  ADMITGEN_RT_FIELD(acc_shift) 28,
+  ADMITGEN_RT_FIELD(fir) wall_48000_q31_48000_fir,
+  ADMITGEN_RT_FIELD(real) wall_48000_q31_48000_real,
+  ADMITGEN_RT_FIELD(pair) wall_48000_q31_48000_pair};
 
 /* The model for a sample rate, or NULL when this header has none for it. */
 static inline const admitgen_rt_model_q31 *wall_48000_q31_model(int32_t fs_hz) {
