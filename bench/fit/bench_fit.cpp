@@ -7,7 +7,9 @@
 ///     ln Z ± error;
 ///  3. the whole grid's wall time with 1 and 2 threads;
 ///  2-3 for each sampler in turn (full, then poles), plus Q1S1 alone, so the two print side by side.
-/// Usage: bench_fit [DATA.csv] [--quick]  (--quick skips the 1-thread grid)
+///  4. with --basotect: the README's quick start (samples/basotect_tuberlin/round_10cm.csv, columns
+///     f,_,_,_,_,re,im,_, 100 live points, 2 threads), each sampler in turn.
+/// Usage: bench_fit [DATA.csv] [--quick] [--basotect]  (--quick skips the 1-thread grid)
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/likelihood.hpp"
@@ -83,8 +85,9 @@ void likelihood_throughput(const Measurement& data) {
 }
 
 double grid(const Measurement& data, int threads, bool print_models, SamplerKind kind = SamplerKind::full,
-            int qmax = 3, int smax = 3) {
+            int qmax = 3, int smax = 3, int live = 500) {
   FitSettings s;
+  s.sampler.live = live;
   s.threads = threads;
   s.sampler_kind = kind;
   s.qmax = qmax;
@@ -113,9 +116,10 @@ double grid(const Measurement& data, int threads, bool print_models, SamplerKind
 
 int main(int argc, char** argv) {
   std::string path = std::string(ADMITGEN_SAMPLES) + "/reference/q1s1_sigma0.01.csv";
-  bool quick = false;
+  bool quick = false, basotect = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    else if (std::strcmp(argv[i], "--basotect") == 0) basotect = true;
     else path = argv[i];
   }
   const Measurement data = read_measurement(path, ReadOptions{});
@@ -136,6 +140,19 @@ int main(int argc, char** argv) {
     if (!quick) {
       const double one = grid(data, 1, false, kind);
       fmt::print("grid wall time, sampler {}, 1 thread:  {:.2f} s  (speed-up {:.2f}x)\n", name, one, one / two);
+    }
+  }
+  if (basotect) {
+    const std::string quick_start = std::string(ADMITGEN_SAMPLES) + "/basotect_tuberlin/round_10cm.csv";
+    ReadOptions options{};
+    options.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
+    const Measurement foam = read_measurement(quick_start, options);
+    for (const SamplerKind kind : {SamplerKind::full, SamplerKind::poles}) {
+      const char* name = kind == SamplerKind::full ? "full" : "poles";
+      fmt::print("\n## Quick start: {} ({} points), sampler {} (100 live points, 2 threads)\n", quick_start, foam.size(),
+                 name);
+      const double wall = grid(foam, 2, true, kind, 3, 3, 100);
+      fmt::print("quick-start wall time, sampler {}: {:.2f} s\n", name, wall);
     }
   }
   return 0;

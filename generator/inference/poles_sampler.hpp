@@ -22,10 +22,10 @@ struct PolesRun {
   /// max_likelihood_index finds the best θ the run saw. calls, iterations, information, log_z and its
   /// error are those of the pole run (ln Z includes truncation_correction).
   NestedRun run;
-  /// Box correction (docs/method.md, "Truncation by the residue box"). The sampled likelihood uses P_up
-  /// for the box mass P_box; every point whose bounds differ (1 − P_lo/P_up > 1e-9) gets the unbiased
-  /// estimate P̂ = h/m from m untruncated draws (see kBoxDrawBudget) (h inside the box), and its weight is
-  /// multiplied by ρ = P̂/P_up. ln Z gains ln Σ p_i ρ_i (this field), with the Monte Carlo error below
+  /// Box correction (docs/method.md, "Truncation by the residue box"). The sampled likelihood uses P̃ (ResidueConditional::
+  /// log_p_sampled) for the box mass P_box; every point whose bounds differ (1 − P_lo/P_up > 1e-9) gets the
+  /// unbiased estimate P̂ = h/m from m untruncated draws (see kBoxDrawBudget) (h inside the box), and its
+  /// weight is multiplied by ρ = P̂/P̃. ln Z gains ln Σ p_i ρ_i (this field), with the Monte Carlo error below
   /// (added in quadrature to run.log_z_error); elsewhere ρ = 1 exactly (to 1e-9).
   double truncation_correction = 0.0;
   double truncation_correction_error = 0.0;
@@ -44,7 +44,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
 
 /// Untruncated draws for the box-mass estimates P̂ of one run: kBoxDrawsPerPoint per point that needs
 /// one, at most kBoxDrawBudget in all, shared over the
-/// points in proportion to p_i/√P_up,i (the allocation minimising the correction's variance bound), at
+/// points in proportion to p_i/√P̃_i (the allocation minimising the correction's variance bound), at
 /// least 1 and at most kMaxBoxDraws per point. The reported correction error says what was reached.
 constexpr double kBoxDrawBudget = 2e6;
 constexpr double kBoxDrawsPerPoint = 50.0;

@@ -33,6 +33,20 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
   residue_box(order, ranges, lo_, hi_);
   a_.resize(2 * n, p_);
   g_.resize(p_);
+  slab_lo_.resize(p_);
+  slab_hi_.resize(p_);
+  // Nodes of y = ln(W/ν), W ~ χ²_ν: density ∝ exp(ν/2 · (y − e^y)), sd ≈ √(2/ν); 33 trapezoid nodes over
+  // ±10 sd of the mode y = 0 (exponentially accurate for this smooth, fast-decaying integrand).
+  constexpr int kNodes = 33;
+  const double sd = std::sqrt(2.0 / nu);
+  double sum = 0.0;
+  for (int i = 0; i < kNodes; ++i) {
+    const double y = sd * (-10.0 + 20.0 * i / (kNodes - 1));
+    mixture_y_.push_back(y);
+    mixture_w_.push_back(std::exp(0.5 * nu * (y - std::expm1(y) - 1.0) + 0.5 * nu));
+    sum += mixture_w_.back();
+  }
+  for (double& w : mixture_w_) w /= sum;
   c_.k = k_;
   c_.nu = nu;
 }
@@ -121,42 +135,72 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
     sum_outside += outside;
     min_inside = std::min(min_inside, inside);
   }
-  // One more upper bound, along the direction v in which the t is widest relative to the box (power
-  // iteration on W⁻¹M⁻¹W⁻¹, W = diag(box widths)): P_box ≤ P(vᵀr ∈ vᵀ·box), where vᵀ·box is the interval
-  // [Σ min(v_k lo_k, v_k hi_k), Σ max(…)] and vᵀr is a univariate t of scale √(S_min/ν · vᵀM⁻¹v). Any v
-  // gives a valid bound; this one is tight where residues are nearly degenerate (coinciding poles).
+  // Directions v_j = W⁻¹e_j, e_j the eigenvectors of W⁻¹M⁻¹W⁻¹ (the covariance in box units, W =
+  // diag(box widths)), are M⁻¹-orthogonal, so the projections v_jᵀr are uncorrelated univariate t's of scale
+  // √(S_min/ν · e_jᵀW⁻¹M⁻¹W⁻¹e_j) (docs/method.md, "Truncation by the residue box"). Each interval
+  // probability P(v_jᵀr ∈ v_jᵀ·box), vᵀ·box = [Σ min(v_k lo_k, v_k hi_k), Σ max(…)], is an upper bound of
+  // P_box; their product P_× accounts for every degenerate direction at once (two or more coinciding
+  // poles) and is what the sampler uses, clamped to [P_lo, P_up].
+  int cut = 0;  // directions whose slab holds less than 1 − 1e-12 of the t
+  double log_product = 0.0;
   if (p_ > 1) {
-    const Eigen::VectorXd width = hi_ - lo_;
-    const auto m_inv = [&](const Eigen::VectorXd& x) {  // M⁻¹x = D L̃⁻ᵀ L̃⁻¹ D x
-      return Eigen::VectorXd(c.scale.cwiseProduct(inv_chol_.transpose() * (inv_chol_ * c.scale.cwiseProduct(x))));
-    };
-    Eigen::VectorXd u = Eigen::VectorXd::Ones(p_);
-    for (int it = 0; it < 8; ++it) {
-      u = m_inv(u.cwiseQuotient(width)).cwiseQuotient(width);  // W⁻¹M⁻¹W⁻¹u: covariance in box units
-      u /= u.norm();
-    }
-    // u is the direction in box units x = W⁻¹(r − lo); the functional uᵀx is vᵀr + const with v = W⁻¹u.
-    const Eigen::VectorXd v = u.cwiseQuotient(width);
-    const double var = v.dot(m_inv(v)) * c.s_min / c.nu;
-    double lo_v = 0.0, hi_v = 0.0;
-    for (Eigen::Index k = 0; k < p_; ++k) {
-      lo_v += std::min(v[k] * lo_[k], v[k] * hi_[k]);
-      hi_v += std::max(v[k] * lo_[k], v[k] * hi_[k]);
-    }
-    if (var > 0.0 && std::isfinite(var)) {
+    const Eigen::ArrayXd width = hi_ - lo_;
+    box_cov_ = inv_chol_ * (c.scale.array() / width).matrix().asDiagonal();  // L̃⁻¹ D W⁻¹
+    eigen_.compute(box_cov_.transpose() * box_cov_);
+    for (Eigen::Index j = 0; j < p_; ++j) {
+      const double var = eigen_.eigenvalues()[j] * c.s_min / c.nu;
+      slab_lo_[j] = -std::numeric_limits<double>::infinity();
+      slab_hi_[j] = std::numeric_limits<double>::infinity();
+      if (!(var > 0.0) || !std::isfinite(var)) continue;
+      const Eigen::VectorXd v = eigen_.eigenvectors().col(j).cwiseQuotient(width.matrix());
+      double lo_v = 0.0, hi_v = 0.0;
+      for (Eigen::Index k = 0; k < p_; ++k) {
+        lo_v += std::min(v[k] * lo_[k], v[k] * hi_[k]);
+        hi_v += std::max(v[k] * lo_[k], v[k] * hi_[k]);
+      }
       const double s = std::sqrt(var), centre = v.dot(c.mean);
+      slab_lo_[j] = (lo_v - centre) / s;
+      slab_hi_[j] = (hi_v - centre) / s;
       double inside, outside;
-      interval((centre - lo_v) / s, (hi_v - centre) / s, inside, outside);
+      interval(-slab_lo_[j], slab_hi_[j], inside, outside);
       min_inside = std::min(min_inside, inside);
+      log_product += outside < 0.5 ? std::log1p(-outside) : std::log(std::max(inside, 1e-300));
+      if (outside > 1e-12) ++cut;
     }
   }
   // P_up is floored at 1e-300 (keeps ln L finite where the t lies far outside the box); a floor only
   // raises the upper bound, and such points have P_lo = 0, so they count fully in the truncation check.
   c.log_p_up = std::log(std::max(min_inside, 1e-300));
   c.log_p_lo = sum_outside < 1.0 ? std::log1p(-sum_outside) : -std::numeric_limits<double>::infinity();
-  c.log_marginal = constant_ - 0.5 * c.nu * std::log(c.s_min) - 0.5 * log_det_m + c.log_p_up;
+  // P̃: with one cut direction the product is that slab's exact t probability; with several the slabs
+  // share the t's scale variable W ~ χ²_ν, so P̃ = E_W[Π_j P_j | W] (Gaussian slabs given W; quadrature in
+  // ln W). Where P_up < 1e-6 (residues far outside the box: no posterior weight) P̃ = P_up.
+  c.log_p_sampled = c.log_p_up;
+  if (c.log_p_up > std::log(1e-6)) {
+    c.log_p_sampled = cut <= 1 ? log_product : log_slab_mixture();
+    c.log_p_sampled = std::clamp(c.log_p_sampled, c.log_p_lo, c.log_p_up);
+  }
+  c.log_marginal = constant_ - 0.5 * c.nu * std::log(c.s_min) - 0.5 * log_det_m + c.log_p_sampled;
   c.valid = std::isfinite(c.log_marginal);
   return c;
+}
+
+double ResidueMarginal::log_slab_mixture() const {
+  // Given W the slab coordinates are independent normals N(0, ν/W); trapezoid nodes on y = ln(W/ν)
+  // (weights ∝ the χ²_ν density of W times W, normalised to sum 1).
+  double total = 0.0;
+  for (std::size_t i = 0; i < mixture_y_.size(); ++i) {
+    const double root = std::exp(0.5 * mixture_y_[i]);  // √(W/ν)
+    double prob = mixture_w_[i];
+    for (Eigen::Index j = 0; j < p_ && prob > 0.0; ++j) {
+      const double a = slab_lo_[j] * root, b = slab_hi_[j] * root;
+      prob *= a > 0.0 ? 0.5 * (std::erfc(a / std::sqrt(2.0)) - std::erfc(b / std::sqrt(2.0)))
+              : b < 0.0 ? 0.5 * (std::erfc(-b / std::sqrt(2.0)) - std::erfc(-a / std::sqrt(2.0)))
+                        : 1.0 - 0.5 * (std::erfc(-a / std::sqrt(2.0)) + std::erfc(b / std::sqrt(2.0)));
+    }
+    total += prob;
+  }
+  return std::log(std::max(total, 1e-300));
 }
 
 double ResidueMarginal::operator()(const double* poles) const { return conditional(poles).log_marginal; }

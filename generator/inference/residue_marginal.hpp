@@ -12,8 +12,9 @@
 /// P_box being the t's mass inside the residue box (V_r its volume). P_box is bounded by its
 /// coordinate marginals (exact univariate t intervals):
 ///   P_lo = max(0, 1 − Σ_k (1 − P_k)) ≤ P_box ≤ P_up = min_k P_k,
-/// and the sampler uses P_up (exact for p = 1). The run then reports ln Z_up ≥ ln Z ≥ ln Z_up + ln(1 − g),
-/// g = E_posterior[1 − P_lo/P_up], which fit_order checks against a tolerance (selection/fit.hpp).
+/// with further upper bounds along the eigen-directions of the box-scaled covariance; the sampler uses P̃,
+/// their product averaged over the t's scale (docs/method.md, "The box mass the sampler uses"), clamped to
+/// [P_lo, P_up], and the pole sampler reweights by P̂/P̃ (inference/poles_sampler.hpp).
 #pragma once
 
 #include "data/measurement.hpp"
@@ -24,6 +25,9 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <vector>
 
 namespace admitgen {
 
@@ -39,7 +43,8 @@ struct ResidueConditional {
   double k = 0.0;              ///< K
   double log_p_up = 0.0;       ///< ln P_up
   double log_p_lo = 0.0;       ///< ln P_lo (−∞ when the union bound gives 0)
-  double log_marginal = 0.0;   ///< ln[(1/V_r) ∫ L dr] with P_up in place of P_box
+  double log_p_sampled = 0.0;  ///< ln P̃, P_lo ≤ P̃ ≤ P_up: the product of the eigen-direction bounds
+  double log_marginal = 0.0;   ///< ln[(1/V_r) ∫ L dr] with P̃ in place of P_box
 };
 
 /// Holds data, basis and work buffers: one instance per thread.
@@ -71,6 +76,12 @@ class ResidueMarginal {
   mutable Eigen::MatrixXd a_, inv_chol_, scaled_;
   mutable Eigen::VectorXd g_;
   mutable Eigen::LLT<Eigen::MatrixXd> llt_;
+  /// ln E_W[Π_j P(slab_j | W)] over the cut slabs (slab_lo_/slab_hi_ in units of the t scale).
+  double log_slab_mixture() const;
+  std::vector<double> mixture_y_, mixture_w_;  ///< quadrature over ln(W/ν)
+  mutable Eigen::ArrayXd slab_lo_, slab_hi_;
+  mutable Eigen::MatrixXd box_cov_;
+  mutable Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_;
   mutable Eigen::ArrayXd dp_, dm_, inv_;
   mutable ResidueConditional c_;
 };
