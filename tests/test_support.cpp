@@ -2,6 +2,8 @@
 #include "test_support.hpp"
 
 #include <array>
+#include <cmath>
+#include <numeric>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +41,17 @@ void write_text(const std::string& path, const std::string& text) {
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+SeedScatter seed_scatter(const std::vector<double>& log_z, const std::vector<double>& log_z_error) {
+  const double n = static_cast<double>(log_z.size());
+  SeedScatter s;
+  s.mean = std::accumulate(log_z.begin(), log_z.end(), 0.0) / n;
+  double var = 0.0;
+  for (double v : log_z) var += (v - s.mean) * (v - s.mean);
+  s.spread = std::sqrt(var / (n - 1.0));
+  s.reported = std::accumulate(log_z_error.begin(), log_z_error.end(), 0.0) / n;
+  return s;
 }
 
 }  // namespace admitgen::test

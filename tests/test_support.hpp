@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace admitgen::test {
 
@@ -25,5 +26,12 @@ std::string sample(const std::string& relative);
 /// Writes text to a file (test fixtures).
 void write_text(const std::string& path, const std::string& text);
 std::string read_text(const std::string& path);
+
+/// Repeated evidence runs (one per seed): the mean ln Z, its sample standard deviation (n − 1) and the
+/// mean of the errors the runs reported; an honest error estimate has spread ≈ reported.
+struct SeedScatter {
+  double mean = 0.0, spread = 0.0, reported = 0.0;
+};
+SeedScatter seed_scatter(const std::vector<double>& log_z, const std::vector<double>& log_z_error);
 
 }  // namespace admitgen::test

@@ -46,12 +46,7 @@ TEST_SUITE("statistical") {
       log_z.push_back(run.log_z);
       err.push_back(run.log_z_error);
     }
-    const double n = static_cast<double>(log_z.size());
-    const double mean = std::accumulate(log_z.begin(), log_z.end(), 0.0) / n;
-    double var = 0.0;
-    for (double v : log_z) var += (v - mean) * (v - mean);
-    const double spread = std::sqrt(var / (n - 1.0));
-    const double reported = std::accumulate(err.begin(), err.end(), 0.0) / n;
+    const auto [mean, spread, reported] = test::seed_scatter(log_z, err);
     MESSAGE("Q1S1, 100 live, 24 seeds: mean ln Z ", mean, ", spread ", spread, ", mean reported error ", reported);
     CHECK(spread <= 2.0 * reported);
     CHECK(spread >= 0.5 * reported);

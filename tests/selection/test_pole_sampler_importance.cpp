@@ -180,12 +180,8 @@ TEST_SUITE("statistical") {
         log_z.push_back(m.run.log_z);
         err.push_back(m.run.log_z_error);
       }
+      const auto [mean, spread, reported] = test::seed_scatter(log_z, err);
       const double n = static_cast<double>(log_z.size());
-      const double mean = std::accumulate(log_z.begin(), log_z.end(), 0.0) / n;
-      double var = 0.0;
-      for (double v : log_z) var += (v - mean) * (v - mean);
-      const double spread = std::sqrt(var / (n - 1.0));
-      const double reported = std::accumulate(err.begin(), err.end(), 0.0) / n;
       MESSAGE(order.name(), ", ", live, " live, 24 seeds: mean ln Z ", mean, ", spread ", spread, ", mean reported error ",
               reported, ", importance sampling ", reference.log_z, " ± ", reference.error, ", ", on_poles,
               " runs on the pole sampler");
