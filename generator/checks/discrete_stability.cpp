@@ -43,7 +43,7 @@ CheckResult check_discrete_stability(const CheckSubject& s) {
                    : "|z| < 1 of the emitted float coefficients (exact in double)";
   double worst = std::numeric_limits<double>::infinity();
   std::string worst_where;
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  DiscreteStabilityDetails d;
   for (const auto& rate : s.header->rates) {
     const auto& m = rate.model;
     double rate_margin = std::numeric_limits<double>::infinity();
@@ -68,14 +68,15 @@ CheckResult check_discrete_stability(const CheckSubject& s) {
                                 : p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i < 0.0;
       visit(true, i, inside, margin_from(p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i));
     }
-    nlohmann::ordered_json j{{"fs_hz", rate.fs_hz}};
+    StabilityRate figures;
+    figures.fs_hz = rate.fs_hz;
     if (std::isfinite(rate_margin)) {
-      j["min_margin"] = rate_margin;  // 1 − max |z|
-      j["slowest_time_constant_s"] = rate_margin > 0.0 ? 1.0 / (rate_margin * rate.fs_hz) : -1.0;
+      figures.min_margin = rate_margin;  // 1 − max |z|
+      figures.slowest_time_constant_s = rate_margin > 0.0 ? 1.0 / (rate_margin * rate.fs_hz) : -1.0;
     }
-    rates.push_back(j);
+    d.rates.push_back(figures);
   }
-  r.details["rates"] = rates;
+  r.details = d;
   r.summary = std::isfinite(worst) ? fmt::format("min margin 1 - |z| = {:.4g} at {}", worst, worst_where)
                                    : "FIR only: every pole at z = 0";
   return r;

@@ -152,6 +152,7 @@ CheckResult check_header_integrity(const CheckSubject& s) {
     compare_fields(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, fields);
     values += fir.size() + real.size() + pair.size() + fields.size();
   }
+  r.details = HeaderIntegrityDetails{values};
   r.summary = r.failures.empty() ? fmt::format("{} table values and struct fields match the block", values)
                                  : "the C tables differ from the machine-readable block";
   return r;

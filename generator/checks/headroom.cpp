@@ -49,7 +49,7 @@ CheckResult check_headroom(const CheckSubject& s) {
   r.method = "L1 norm of each state's and the output's impulse response against its Q range (full-scale input, "
              "any sign pattern); 64-bit accumulator bounds";
   double worst_state = 0.0, worst_out = 0.0;
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  HeadroomDetails d;
   for (const auto& rate : s.header->rates) {
     const auto& q = *rate.fixed;
     const auto& m = rate.model;
@@ -91,10 +91,9 @@ CheckResult check_headroom(const CheckSubject& s) {
                          "saturates the output (out_shift {} is too small)", rate.fs_hz, out_l1, range, q.out_shift));
     worst_state = std::max(worst_state, state_max);
     worst_out = std::max(worst_out, out_l1 / range);
-    rates.push_back({{"fs_hz", rate.fs_hz}, {"max_state_l1", state_max}, {"output_l1", out_l1},
-                     {"output_range", range}, {"output_table_mantissa_sum", table}});
+    d.rates.push_back({rate.fs_hz, state_max, out_l1, range, table});
   }
-  r.details["rates"] = rates;
+  r.details = d;
   r.summary = fmt::format("max state L1 {:.6g} (range 1), max output L1 / 2^out_shift = {:.4g}", worst_state, worst_out);
   return r;
 }

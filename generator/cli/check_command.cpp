@@ -3,6 +3,7 @@
 
 #include "checks/check_suite.hpp"
 #include "io/check_input.hpp"
+#include "io/check_report.hpp"
 
 #include <fmt/core.h>
 
@@ -29,9 +30,9 @@ int run_check_command(const CheckOptions& o) {
   if (!subject.note.empty()) fmt::print(stderr, "note: {}\n", subject.note);
   const auto report = checks::run_checks(subject);
   if (o.json)
-    fmt::print("{}\n", report.to_json().dump(2));
+    fmt::print("{}", io::check_report_json(report));
   else
-    fmt::print("{}", report.to_text());
+    fmt::print("{}", io::check_report_text(report));
   return report.passed() ? 0 : 1;
 }
 
