@@ -155,9 +155,9 @@ void require_representable(const Order& order, const Eigen::VectorXd& theta, dou
   if (data_f_hz.empty()) throw InputError("the fit lists no data frequencies to refit at");
   const double f_top = *std::max_element(data_f_hz.begin(), data_f_hz.end());
   if (f_top >= 0.45 * fs_hz)
-    throw InputError(fmt::format("--fs {:g} Hz: the fit's data reach {:g} Hz, beyond 0.45 fs = {:g} Hz; a discrete "
+    throw InputError(fmt::format("{} Hz: the fit's data reach {:g} Hz, beyond 0.45 fs = {:g} Hz; a discrete "
                                  "filter at this rate cannot reproduce them (use fs > {:g} Hz)",
-                                 fs_hz, f_top, 0.45 * fs_hz, f_top / 0.45));
+                                 setting("fs_hz", fmt::format("{:g}", fs_hz)), f_top, 0.45 * fs_hz, f_top / 0.45));
 }
 
 /// The discrete poles (numerators still zero): each pole's exact image e^{−aT} in delta / coupled form, or

@@ -104,7 +104,7 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
     enforce_continuous_passivity(source);
     settings.passivity_violations = discrete_passivity_violations;
   } else {
-    source.notes.push_back("emitted without passivity enforcement (--no-passivity-enforcement)");
+    source.notes.push_back("emitted without passivity enforcement (" + setting("enforce_passivity = false") + ")");
   }
   EmitResult r;
   for (double margin : kMargins) {
@@ -128,17 +128,17 @@ std::string EmitResult::refusal(const std::string& out) const {
   if (has("causality"))
     next = "the model has a pole with lambda or alpha <= 0: re-run admitgen fit (the default estimate is always causal)";
   else if ((has("passivity_discrete") || has("passivity_continuous")) && !emission.settings.enforce_passivity)
-    next = "drop --no-passivity-enforcement: emit then makes the model and the refit passive";
+    next = "drop " + setting("enforce_passivity = false") + ": emit then makes the model and the refit passive";
   else if (has("passivity_discrete") || has("passivity_continuous"))
-    next = "the passive refit could not be certified at this rate and format: try a higher --fs, --format f32, "
-           "or --fir-taps 1..8; `admitgen check` on the written header shows the bands";
+    next = fmt::format("the passive refit could not be certified at this rate and format: try a higher {}, {}, or {}; "
+                       "`admitgen check` on the written header shows the bands",
+                       setting("fs_hz"), setting("format", "f32"), setting("fir_taps", "1..8"));
   else if (has("headroom") || has("limit_cycle"))
-    next = "fixed-point range: try --format q31 (or f32) instead of q15";
+    next = "fixed-point range: try " + setting("format", "q31") + " (or f32) instead of q15";
   else
     next = "re-run admitgen emit; if it persists, report it with the fit.json";
-  return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}\n"
-                     "(--allow-unsafe writes it anyway, for experts)",
-                     out, fmt::join(failed, ", "), why, next);
+  return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}", out,
+                     fmt::join(failed, ", "), why, next);
 }
 
 }  // namespace admitgen::emit
