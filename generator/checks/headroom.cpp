@@ -41,11 +41,8 @@ std::pair<double, double> pair_state_l1(const codegen::PairTerm& p) {
 CheckResult check_headroom(const CheckSubject& s) {
   CheckResult r;
   r.name = "headroom";
-  if (!s.header || s.header->format == codegen::Format::f32) {
-    r.status = Status::not_applicable;
-    r.summary = s.header ? "f32: floating point (no Q-format range)" : "a fit has no emitted coefficients";
-    return r;
-  }
+  if (!s.header || s.header->format == codegen::Format::f32)
+    return r.not_applicable(s.header ? "f32: floating point (no Q-format range)" : "a fit has no emitted coefficients");
   r.method = "L1 norm of each state's and the output's impulse response against its Q range (full-scale input, "
              "any sign pattern); 64-bit accumulator bounds";
   double worst_state = 0.0, worst_out = 0.0;

@@ -115,11 +115,7 @@ void float_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, L
 CheckResult check_limit_cycles(const CheckSubject& s) {
   CheckResult r;
   r.name = "limit_cycle";
-  if (!s.header) {
-    r.status = Status::not_applicable;
-    r.summary = "a fit has no emitted coefficients";
-    return r;
-  }
+  if (!s.header) return r.not_applicable("a fit has no emitted coefficients");
   const bool fixed = s.header->format != codegen::Format::f32;
   r.method = fixed ? "zero input from full-scale states, bit-exact integer model of the runtime: every state must "
                      "reach exactly 0 (magnitude truncation)"

@@ -33,32 +33,13 @@ void report_bands(CheckResult& r, const PassivityResult& p, const std::string& p
                        band_place_text(place(b, lo, hi)), b.min_re, hz(b.at)));
 }
 
-bool causal(const MultipoleSurface& s) {
-  for (int q = 0; q < s.order.q(); ++q)
-    if (!(s.theta[Order::lambda(q)] > 0.0)) return false;
-  for (int k = 0; k < s.order.s(); ++k)
-    if (!(s.theta[s.order.alpha(k)] > 0.0)) return false;
-  return true;
-}
-
-bool stable(const codegen::DiscreteModel& m) {
-  for (const auto& t : m.real)
-    if (!(t.eps > 0.0 && t.eps < 2.0)) return false;
-  for (const auto& p : m.pair)
-    if (!(p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i < 0.0)) return false;
-  return true;
-}
-
 }  // namespace
 
 CheckResult check_continuous_passivity(const CheckSubject& s) {
   CheckResult r;
   r.name = "passivity_continuous";
-  if (!causal(s.surface)) {
-    r.status = Status::not_applicable;
-    r.summary = "not causal (see causality): positive-realness needs every pole in the left half-plane";
-    return r;
-  }
+  if (!is_causal(s.surface.order, s.surface.theta.data()))
+    return r.not_applicable("not causal (see causality): positive-realness needs every pole in the left half-plane");
   const PassivityResult p = continuous_passivity(s.surface.order, s.surface.theta.data());
   r.method = "Re G(jw) >= 0 for all w >= 0: imaginary-axis eigenvalues of the Hamiltonian (" + p.method + ")";
   report_bands(r, p, "", s.data_f_min_hz, s.data_f_max_hz);
@@ -71,18 +52,15 @@ CheckResult check_continuous_passivity(const CheckSubject& s) {
 CheckResult check_discrete_passivity(const CheckSubject& s) {
   CheckResult r;
   r.name = "passivity_discrete";
-  if (!s.header) {
-    r.status = Status::not_applicable;
-    r.summary = "a fit has no emitted coefficients (check the header made by admitgen emit)";
-    return r;
-  }
+  if (!s.header)
+    return r.not_applicable("a fit has no emitted coefficients (check the header made by admitgen emit)");
   r.method = "Re H(e^jtheta) >= 0 on [0, pi] of the emitted (quantised) coefficients: Hamiltonian test after the "
              "bilinear map z = (1 + s)/(1 - s)";
   DiscretePassivityDetails d;
   double worst = std::numeric_limits<double>::infinity();
   std::string worst_text;
   for (const auto& rate : s.header->rates) {
-    if (!stable(rate.model)) {
+    if (!rate.model.stable()) {
       d.rates.push_back({rate.fs_hz, std::nullopt});
       r.fail(fmt::format("fs {} Hz: not decidable, the filter is unstable (see discrete_stability)", rate.fs_hz));
       continue;

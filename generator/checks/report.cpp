@@ -8,6 +8,12 @@ void CheckResult::fail(std::string what) {
   failures.push_back(std::move(what));
 }
 
+CheckResult CheckResult::not_applicable(std::string why) {
+  status = Status::not_applicable;
+  summary = std::move(why);
+  return *this;
+}
+
 const char* band_place_text(BandPlace place) {
   switch (place) {
     case BandPlace::data_band_unknown: return "data band unknown";

@@ -94,6 +94,8 @@ struct CheckResult {
 
   /// Records a failure (and marks the check failed).
   void fail(std::string what);
+  /// Marks the check as not applying to the subject, `why` as its summary; returns the result.
+  CheckResult not_applicable(std::string why);
 };
 
 struct CheckReport {

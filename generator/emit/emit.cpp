@@ -5,6 +5,7 @@
 #include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
+#include "model/multipole_surface.hpp"
 #include "model/passivity.hpp"
 #include "passivity/passive_residues.hpp"
 
@@ -53,10 +54,7 @@ std::vector<double> discrete_passivity_violations(const codegen::DiscreteModel& 
 
 void enforce_continuous_passivity(codegen::EmissionSource& source) {
   const Order& order = source.surface.order;
-  for (int q = 0; q < order.q(); ++q)
-    if (!(source.surface.theta[Order::lambda(q)] > 0.0)) return;  // non-causal: causality check refuses it
-  for (int s = 0; s < order.s(); ++s)
-    if (!(source.surface.theta[order.alpha(s)] > 0.0)) return;
+  if (!is_causal(order, source.surface.theta.data())) return;  // non-causal: the causality check refuses it
   const PassivityResult before = continuous_passivity(order, source.surface.theta.data());
   if (before.passive) return;
   const Eigen::ArrayXd f = Eigen::Map<const Eigen::ArrayXd>(source.data_f_hz.data(), Eigen::Index(source.data_f_hz.size()));

@@ -40,6 +40,12 @@ Json passivity_json(const checks::PassivityDetails& d) {
           {"min_re", p.min_re}, {"min_at_hz", frequency(p.min_at)}};
 }
 
+/// Sets j[key] when the figure is there (a figure a rate does not have is left out).
+template <class T>
+void put(Json& j, const char* key, const std::optional<T>& value) {
+  if (value) j[key] = *value;
+}
+
 /// {"rates": [f(rate), ...]}.
 template <class Rate, class F>
 Json rates_json(const std::vector<Rate>& rates, F f) {
@@ -57,8 +63,8 @@ Json details_json(const checks::CheckDetails& details) {
         } else if constexpr (std::is_same_v<D, checks::DiscreteStabilityDetails>) {
           return rates_json(d.rates, [](const checks::StabilityRate& r) {
             Json j{{"fs_hz", r.fs_hz}};
-            if (r.min_margin) j["min_margin"] = *r.min_margin;
-            if (r.slowest_time_constant_s) j["slowest_time_constant_s"] = *r.slowest_time_constant_s;
+            put(j, "min_margin", r.min_margin);
+            put(j, "slowest_time_constant_s", r.slowest_time_constant_s);
             return j;
           });
         } else if constexpr (std::is_same_v<D, checks::PassivityDetails>) {
@@ -78,8 +84,8 @@ Json details_json(const checks::CheckDetails& details) {
         } else if constexpr (std::is_same_v<D, checks::LimitCycleDetails>) {
           return rates_json(d.rates, [](const checks::LimitCycleRate& r) {
             Json j{{"fs_hz", r.fs_hz}};
-            if (r.zero_decay_bound) j["zero_decay_bound"] = *r.zero_decay_bound;
-            if (r.simulated_samples) j["simulated_samples"] = *r.simulated_samples;
+            put(j, "zero_decay_bound", r.zero_decay_bound);
+            put(j, "simulated_samples", r.simulated_samples);
             return j;
           });
         } else {

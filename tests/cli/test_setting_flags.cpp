@@ -43,7 +43,7 @@ TEST_CASE("setting errors: the library names the field, the CLI spells the flag"
   CHECK(located.spelled(cli::flag_for) == "data.csv:3: --phase-unit deg, but the file gives the phase in radians (value '1.2')");
 }
 
-TEST_CASE("setting text: warnings and advice name settings with values; files read keys, the CLI reads flags") {
+TEST_CASE("setting text: warnings and advice name settings with values, files read keys, the CLI reads flags") {
   const std::string text = "read as " + setting("quantity", "impedance") + " " + setting("rho_c", "413.3") +
                            ", or drop " + setting("enforce_passivity = false");
   CHECK(plain_settings(text) == "read as quantity=impedance rho_c=413.3, or drop enforce_passivity = false");
