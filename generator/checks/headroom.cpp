@@ -53,7 +53,10 @@ CheckResult check_headroom(const CheckSubject& s) {
     const double full = std::ldexp(1.0, q.bits);
     double state_max = 0.0;
     for (std::size_t i = 0; i < m.real.size(); ++i) {
-      const double eps = m.real[i].eps, l1 = eps / (1.0 - std::abs(1.0 - eps));
+      // Σ ε|1 − ε|ⁿ = ε/(1 − |1 − ε|) for a stable pole; unbounded otherwise.
+      const double eps = m.real[i].eps;
+      const double l1 = codegen::inside_unit_circle(m.real[i]) ? eps / (1.0 - std::abs(1.0 - eps))
+                                                               : std::numeric_limits<double>::infinity();
       state_max = std::max(state_max, l1);
       if (!(l1 <= 1.0)) r.fail(fmt::format("{}: state x L1 norm {:.9g} > 1: a full-scale input saturates it",
                                            term_location(rate.fs_hz, m, false, i), l1));
