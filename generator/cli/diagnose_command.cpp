@@ -122,7 +122,7 @@ int run_diagnose_command(const DiagnoseCommand& o) {
   write_file_atomically(path, io::diagnosis_text(record));
   report::write_diagnosis_report(o.out, record);
   if (!o.quiet) {
-    for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
+    for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
     print_summary(d, path);
   }
   // docs/cli.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an
