@@ -146,6 +146,11 @@ std::string flag_for(const std::string& key) {
       {"tube.mic1_distance_m", "--mic-distance"},
       {"tube.spacing_m", "--mic-spacing"},
   };
+  // The reading options of diagnose's --sim table (DiagnoseCommand::sim_read): "sim.columns" -> "--sim-columns".
+  if (key.rfind("sim.", 0) == 0) {
+    const std::string flag = flag_for(key.substr(4));
+    return flag.rfind("--", 0) == 0 ? "--sim-" + flag.substr(2) : key;
+  }
   const auto it = flags.find(key);
   return it == flags.end() ? key : it->second;
 }
