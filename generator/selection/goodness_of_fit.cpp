@@ -26,9 +26,10 @@ GoodnessOfFit goodness_of_fit(const Measurement& data, const ModelResult& model)
 std::optional<std::string> poor_fit_warning(const std::string& order, const GoodnessOfFit& g) {
   if (!(g.relative_rms > kPoorRelativeRms) && !(g.max_abs_delta_alpha > kPoorDeltaAlpha)) return std::nullopt;
   return fmt::format("{} fits poorly: relative RMS residual {:.3g} (threshold {}), max |delta alpha| {:.3g} "
-                     "(threshold {}); check how the data were read ({}, {}, {}) or allow a larger order",
+                     "(threshold {}); check how the data were read ({} (re and im, or mag and phase?), {}, {}, {}) or "
+                     "allow a larger order",
                      order, g.relative_rms, kPoorRelativeRms, g.max_abs_delta_alpha, kPoorDeltaAlpha,
-                     setting("quantity"), setting("rho_c"), setting("time_convention"));
+                     setting("columns"), setting("quantity"), setting("rho_c"), setting("time_convention"));
 }
 
 }  // namespace admitgen

@@ -84,7 +84,7 @@ TEST_CASE("fit cli: the two readings that used to succeed silently now fail and 
   CHECK(warnings.find("fits poorly") != std::string::npos);
   CHECK(d.output.find("warning: " + minus.data + ": Im y < 0") != std::string::npos);
   CHECK(d.output.find("give --time-convention -jwt") != std::string::npos);
-  CHECK(d.output.find("check how the data were read (--quantity, --rho-c, --time-convention)") != std::string::npos);
+  CHECK(d.output.find("check how the data were read (--columns (re and im, or mag and phase?), --quantity, --rho-c, --time-convention)") != std::string::npos);
 }
 
 TEST_CASE("fit cli: an input error found after the output directory was made leaves no directory") {
