@@ -36,6 +36,7 @@ struct Diagnosis {
   std::vector<StageGap> stages;
   std::vector<EffectCandidate> candidates;  ///< what was tried (priors for the report)
   Identification identification;
+  Explanation explanation;
   Verdict verdict;
   IdentificationSettings settings;
   std::vector<std::string> warnings;

@@ -81,7 +81,7 @@ TEST_CASE("diagnose: early stop leaves the verdict alone and only stops candidat
   int stopped = 0;
   for (const auto& e : with.identification.effects) {
     const auto full = std::find_if(without.identification.effects.begin(), without.identification.effects.end(),
-                                   [&](const auto& x) { return x.name == e.name; });
+                                   [&](const auto& x) { return x.candidate == e.candidate; });
     REQUIRE(full != without.identification.effects.end());
     CAPTURE(e.name);
     if (!e.stopped_early) {
