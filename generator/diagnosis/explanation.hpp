@@ -23,7 +23,7 @@
 namespace admitgen::diagnosis {
 
 /// Members at most (bounds the search's cost; a gap that needs more is reported as it stands).
-inline constexpr std::size_t kMaxExplanationEffects = 4;
+inline constexpr std::size_t kMaxExplanationEffects = 3;
 
 struct ExplanationStep {
   std::size_t candidate = 0;          ///< index into the candidates

@@ -31,7 +31,7 @@ Verdict decide(const Gap& gap, const Identification& id, const Explanation& expl
   v.explained = joint.explained;
   v.band = gap.bands[joint.band].band;
   v.white_after = joint.gap_after.whiteness.white;
-  v.effect = !v.white_after && v.explained < kExplainedEnough ? "unexplained" : v.explanation.front().effect;
+  v.effect = v.white_after ? v.explanation.front().effect : "unexplained";
   return v;
 }
 
@@ -40,9 +40,9 @@ std::string describe_decision_rule() {
       "none unless the effect with the largest Bayes factor against no effect reaches {0:g} deciban (odds 100:1); "
       "then the explanation grown from it by greedy forward selection (each added effect fitted jointly and at least "
       "{0:g} deciban better than the explanation without it; stop when none is, when the residual is white, or at "
-      "{1} effects); unexplained when that explanation leaves the residual structured and explains less than {2:g} of "
-      "the squared gap, else the first effect of the explanation",
-      kDecisiveDeciban, kMaxExplanationEffects, kExplainedEnough);
+      "{1} effects); unexplained when that explanation leaves the residual structured (lag-1 |z| >= 3), else the "
+      "first effect of the explanation",
+      kDecisiveDeciban, kMaxExplanationEffects);
 }
 
 }  // namespace admitgen::diagnosis
