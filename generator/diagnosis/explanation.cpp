@@ -42,13 +42,16 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
   out.steps.push_back({first, deciban(singles[first].log_z, log_z_none), singles[first].shrink});
   out.joint = singles[first];
   std::vector<const EffectCandidate*> members{&candidates[first]};
-  for (std::uint64_t round = 1; out.steps.size() < kMaxExplanationEffects && !out.joint.gap_after.whiteness.white;
-       ++round) {
+  for (std::uint64_t round = 1; out.steps.size() < kMaxExplanationEffects; ++round) {
+    // A white residual leaves no structure in the mean; only the noise shape, which the lag-1 test
+    // cannot see, may still be missing.
+    const bool white = out.joint.gap_after.whiteness.white;
     std::vector<std::size_t> added;
     std::vector<EffectCandidate> tried;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       if (std::any_of(out.steps.begin(), out.steps.end(), [i](const ExplanationStep& s) { return s.candidate == i; }))
         continue;
+      if (white && candidates[i].stage != EffectStage::noise) continue;
       std::vector<const EffectCandidate*> with = members;
       with.push_back(&candidates[i]);
       added.push_back(i);

@@ -7,7 +7,9 @@
 ///   round r: for every candidate e not in E_r, the evidence of E_r + e with all its parameters free
 ///   (fitted jointly, combine_effects); the best is accepted if BF(E_r + e : E_r) ≥ 20 dB;
 ///   stop when no addition is decisive, when the residual of E_r is white (residual_whiteness.hpp), or at
-///   kMaxExplanationEffects members.
+///   kMaxExplanationEffects members. A white residual has no structure left in its mean, but a noise
+///   shape (heteroscedastic_noise) does not show in the lag-1 test: with a white residual the round
+///   still tries the noise-stage effects, and only them.
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
 /// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
