@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The diagnosis validation suite (docs/diagnosis.md): generated cases of every documented effect at a
 // clear and a marginal size on three base materials, plus clean controls; `diagnose` is never told the
-// effect (an air gap behind a SPEC's air cavity counts as the material candidate of that cavity's d). Prints the confusion matrix; asserts top-1 accuracy ≥ 90 % on the clear sizes, `none` on
-// ≥ 90 % of the controls, the signature frequency inside the worst band, and shrink ≥ 3× overall and
+// effect (an air gap behind a SPEC's air cavity counts as the material candidate of that cavity's d).
+// Prints the confusion matrix; asserts top-1 accuracy ≥ 90 % on the clear sizes, `none` on ≥ 90 % of the
+// controls, the signature frequency inside the worst band, and shrink ≥ 3× overall and
 // ≥ 5× in the worst band for every correctly identified clear case (heteroscedastic_noise excepted:
 // it changes the noise, not the mean, so no gap can shrink; its evidence is in the likelihood).
 #include "validation_cases.hpp"
