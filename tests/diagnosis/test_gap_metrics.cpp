@@ -65,7 +65,7 @@ TEST_CASE("effect likelihood: marginal Gaussian prefers the true model - noise s
   CHECK(l({truth, Eigen::ArrayXd::Constant(100, 3.0)}) == doctest::Approx(l({truth, {}})));
 }
 
-TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none; unexplained when the explanation leaves structure") {
+TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none, unexplained when the explanation leaves structure") {
   const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
   const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
   const Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
