@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace admitgen::checks {
@@ -20,7 +21,9 @@ CheckResult check_causality(const CheckSubject& s) {
   for (int q = 0; q < o.q(); ++q) slowest = std::min(slowest, th[Order::lambda(q)]);
   for (int k = 0; k < o.s(); ++k) slowest = std::min(slowest, th[o.alpha(k)]);
   for (auto& violation : causality_violations(s.surface)) r.fail(std::move(violation));
-  r.details["slowest_rate_per_s"] = std::isinf(slowest) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(slowest);
+  CausalityDetails d;
+  if (!std::isinf(slowest)) d.slowest_rate_per_s = slowest;
+  r.details = d;
   r.summary = o.buffers() == 0 ? "no poles (G = G_inf)"
                                : fmt::format("{} pole(s); slowest decay rate {:.6g} 1/s", o.q() + o.s(), slowest);
   return r;

@@ -33,17 +33,14 @@ double margin_from(double t) { return -t / (1.0 + std::sqrt(1.0 + t)); }
 CheckResult check_discrete_stability(const CheckSubject& s) {
   CheckResult r;
   r.name = "discrete_stability";
-  if (!s.header) {
-    r.status = Status::not_applicable;
-    r.summary = "a fit has no emitted coefficients (check the header made by admitgen emit)";
-    return r;
-  }
+  if (!s.header)
+    return r.not_applicable("a fit has no emitted coefficients (check the header made by admitgen emit)");
   const bool fixed = s.header->format != codegen::Format::f32;
   r.method = fixed ? "|z| < 1 of the quantised coefficients, decided exactly in integer arithmetic"
                    : "|z| < 1 of the emitted float coefficients (exact in double)";
   double worst = std::numeric_limits<double>::infinity();
   std::string worst_where;
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  DiscreteStabilityDetails d;
   for (const auto& rate : s.header->rates) {
     const auto& m = rate.model;
     double rate_margin = std::numeric_limits<double>::infinity();
@@ -58,24 +55,25 @@ CheckResult check_discrete_stability(const CheckSubject& s) {
     for (std::size_t i = 0; i < m.real.size(); ++i) {
       const double eps = m.real[i].eps;
       const bool inside = fixed ? real_inside(rate.fixed->real[i].eps, rate.fixed->bits + rate.fixed->real[i].shift)
-                                : (eps > 0.0 && eps < 2.0);
+                                : codegen::inside_unit_circle(m.real[i]);
       visit(false, i, inside, 1.0 - std::abs(1.0 - eps));
     }
     for (std::size_t i = 0; i < m.pair.size(); ++i) {
       const auto& p = m.pair[i];
       const bool inside = fixed ? pair_inside(rate.fixed->pair[i].e_r, rate.fixed->pair[i].p_i,
                                               rate.fixed->bits + rate.fixed->pair[i].shift)
-                                : p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i < 0.0;
+                                : codegen::inside_unit_circle(p);
       visit(true, i, inside, margin_from(p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i));
     }
-    nlohmann::ordered_json j{{"fs_hz", rate.fs_hz}};
+    StabilityRate figures;
+    figures.fs_hz = rate.fs_hz;
     if (std::isfinite(rate_margin)) {
-      j["min_margin"] = rate_margin;  // 1 − max |z|
-      j["slowest_time_constant_s"] = rate_margin > 0.0 ? 1.0 / (rate_margin * rate.fs_hz) : -1.0;
+      figures.min_margin = rate_margin;  // 1 − max |z|
+      figures.slowest_time_constant_s = rate_margin > 0.0 ? 1.0 / (rate_margin * rate.fs_hz) : -1.0;
     }
-    rates.push_back(j);
+    d.rates.push_back(figures);
   }
-  r.details["rates"] = rates;
+  r.details = d;
   r.summary = std::isfinite(worst) ? fmt::format("min margin 1 - |z| = {:.4g} at {}", worst, worst_where)
                                    : "FIR only: every pole at z = 0";
   return r;

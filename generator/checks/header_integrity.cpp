@@ -118,11 +118,7 @@ Tables tables(const codegen::RuntimeModel<Sample>& t) {
 CheckResult check_header_integrity(const CheckSubject& s) {
   CheckResult r;
   r.name = "header_integrity";
-  if (!s.header) {
-    r.status = Status::not_applicable;
-    r.summary = "not a header";
-    return r;
-  }
+  if (!s.header) return r.not_applicable("not a header");
   r.method = "every C table and model struct equals the machine-readable block the other checks read";
   const auto& h = *s.header;
   const bool f32 = h.format == codegen::Format::f32;
@@ -152,6 +148,7 @@ CheckResult check_header_integrity(const CheckSubject& s) {
     compare_fields(r, s.header_text, "admitgen_rt_model_" + fmt_name, base, fields);
     values += fir.size() + real.size() + pair.size() + fields.size();
   }
+  r.details = HeaderIntegrityDetails{values};
   r.summary = r.failures.empty() ? fmt::format("{} table values and struct fields match the block", values)
                                  : "the C tables differ from the machine-readable block";
   return r;

@@ -41,22 +41,22 @@ std::pair<double, double> pair_state_l1(const codegen::PairTerm& p) {
 CheckResult check_headroom(const CheckSubject& s) {
   CheckResult r;
   r.name = "headroom";
-  if (!s.header || s.header->format == codegen::Format::f32) {
-    r.status = Status::not_applicable;
-    r.summary = s.header ? "f32: floating point (no Q-format range)" : "a fit has no emitted coefficients";
-    return r;
-  }
+  if (!s.header || s.header->format == codegen::Format::f32)
+    return r.not_applicable(s.header ? "f32: floating point (no Q-format range)" : "a fit has no emitted coefficients");
   r.method = "L1 norm of each state's and the output's impulse response against its Q range (full-scale input, "
              "any sign pattern); 64-bit accumulator bounds";
   double worst_state = 0.0, worst_out = 0.0;
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  HeadroomDetails d;
   for (const auto& rate : s.header->rates) {
     const auto& q = *rate.fixed;
     const auto& m = rate.model;
     const double full = std::ldexp(1.0, q.bits);
     double state_max = 0.0;
     for (std::size_t i = 0; i < m.real.size(); ++i) {
-      const double eps = m.real[i].eps, l1 = eps / (1.0 - std::abs(1.0 - eps));
+      // Σ ε|1 − ε|ⁿ = ε/(1 − |1 − ε|) for a stable pole; unbounded otherwise.
+      const double eps = m.real[i].eps;
+      const double l1 = codegen::inside_unit_circle(m.real[i]) ? eps / (1.0 - std::abs(1.0 - eps))
+                                                               : std::numeric_limits<double>::infinity();
       state_max = std::max(state_max, l1);
       if (!(l1 <= 1.0)) r.fail(fmt::format("{}: state x L1 norm {:.9g} > 1: a full-scale input saturates it",
                                            term_location(rate.fs_hz, m, false, i), l1));
@@ -91,10 +91,9 @@ CheckResult check_headroom(const CheckSubject& s) {
                          "saturates the output (out_shift {} is too small)", rate.fs_hz, out_l1, range, q.out_shift));
     worst_state = std::max(worst_state, state_max);
     worst_out = std::max(worst_out, out_l1 / range);
-    rates.push_back({{"fs_hz", rate.fs_hz}, {"max_state_l1", state_max}, {"output_l1", out_l1},
-                     {"output_range", range}, {"output_table_mantissa_sum", table}});
+    d.rates.push_back({rate.fs_hz, state_max, out_l1, range, table});
   }
-  r.details["rates"] = rates;
+  r.details = d;
   r.summary = fmt::format("max state L1 {:.6g} (range 1), max output L1 / 2^out_shift = {:.4g}", worst_state, worst_out);
   return r;
 }

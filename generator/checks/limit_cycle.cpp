@@ -40,7 +40,7 @@ std::vector<double> state_magnitudes(codegen::RuntimeNode<Sample>& node) {
 /// lie inside the proven envelope |s_n| ≤ rⁿ |s_0| + 1 LSB.
 template <typename Sample>
 void fixed_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, const codegen::FixedCoefficients& q,
-                      nlohmann::ordered_json& j) {
+                      LimitCycleRate& figures) {
   const long bound = q.zero_decay_bound();
   const long n = std::min(bound, kMaxSamples);
   const auto rad = radii(m);
@@ -75,15 +75,15 @@ void fixed_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, c
     if (n == bound && std::any_of(out.end() - window, out.end(), [](Sample v) { return v != 0; }))
       r.fail(fmt::format("fs {} Hz: output not exactly 0 after {} zero-input samples from {}", fs, n, from));
   }
-  j["zero_decay_bound"] = bound;
-  j["simulated_samples"] = n;
+  figures.zero_decay_bound = bound;
+  figures.simulated_samples = n;
 }
 
 /// f32, on the runtime's own kernel. Round-to-nearest leaves x unchanged when ε|x| < ulp(x)/2, i.e.
 /// ε ≲ 2^-24: the state then never decays (a deadband at any amplitude). From state 1 (|ψ| = 1), zero
 /// input for twice the samples the exact envelope needs to fall by 2^-24 (capped): every state must be
 /// below max(2 rⁿ, 2^-24).
-void float_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, nlohmann::ordered_json& j) {
+void float_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, LimitCycleRate& figures) {
   const auto rad = radii(m);
   double slowest = 0.0;
   for (double v : rad) slowest = std::max(slowest, v);
@@ -107,7 +107,7 @@ void float_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, n
                          "float rounding deadband (the per-sample decrement is below half an ulp)",
                          term_location(fs, m, pair, k), now[i], n, exact));
   }
-  j["simulated_samples"] = n;
+  figures.simulated_samples = n;
 }
 
 }  // namespace
@@ -115,34 +115,31 @@ void float_zero_input(CheckResult& r, int fs, const codegen::DiscreteModel& m, n
 CheckResult check_limit_cycles(const CheckSubject& s) {
   CheckResult r;
   r.name = "limit_cycle";
-  if (!s.header) {
-    r.status = Status::not_applicable;
-    r.summary = "a fit has no emitted coefficients";
-    return r;
-  }
+  if (!s.header) return r.not_applicable("a fit has no emitted coefficients");
   const bool fixed = s.header->format != codegen::Format::f32;
   r.method = fixed ? "zero input from full-scale states, bit-exact integer model of the runtime: every state must "
                      "reach exactly 0 (magnitude truncation)"
                    : "zero input from unit states, IEEE single simulation of the runtime: states must decay "
                      "below 2^-24 (no rounding deadband)";
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  LimitCycleDetails d;
   long total = 0;
   for (const auto& rate : s.header->rates) {
-    nlohmann::ordered_json j{{"fs_hz", rate.fs_hz}};
+    LimitCycleRate figures;
+    figures.fs_hz = rate.fs_hz;
     const auto rad = radii(rate.model);
     if (std::any_of(rad.begin(), rad.end(), [](double v) { return !(v < 1.0); }))
       r.fail(fmt::format("fs {} Hz: a pole on or outside the unit circle (see discrete_stability): zero input does "
                          "not decay", rate.fs_hz));
     else if (s.header->format == codegen::Format::q31)
-      fixed_zero_input<std::int32_t>(r, rate.fs_hz, rate.model, *rate.fixed, j);
+      fixed_zero_input<std::int32_t>(r, rate.fs_hz, rate.model, *rate.fixed, figures);
     else if (s.header->format == codegen::Format::q15)
-      fixed_zero_input<std::int16_t>(r, rate.fs_hz, rate.model, *rate.fixed, j);
+      fixed_zero_input<std::int16_t>(r, rate.fs_hz, rate.model, *rate.fixed, figures);
     else
-      float_zero_input(r, rate.fs_hz, rate.model, j);
-    total += j.value("simulated_samples", 0L);
-    rates.push_back(j);
+      float_zero_input(r, rate.fs_hz, rate.model, figures);
+    total += figures.simulated_samples.value_or(0L);
+    d.rates.push_back(figures);
   }
-  r.details["rates"] = rates;
+  r.details = d;
   r.summary = r.failures.empty() ? fmt::format("zero input decays to 0 at every rate ({} samples simulated)", total)
                                  : "zero input does not decay";
   return r;

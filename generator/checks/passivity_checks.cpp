@@ -12,44 +12,25 @@ namespace {
 std::string hz(double f) { return std::isinf(f) ? "infinity" : fmt::format("{:.6g} Hz", f); }
 
 /// Where a band lies relative to the fitted data band [lo, hi].
-std::string relative_to_data(const NegativeBand& b, double lo, double hi) {
-  if (!(hi > lo)) return "data band unknown";
-  if (b.hi < lo) return "below the data band";
-  if (b.lo > hi) return "above the data band";
-  if (b.lo >= lo && b.hi <= hi) return "inside the data band";
-  return "overlapping the data band";
+BandPlace place(const NegativeBand& b, double lo, double hi) {
+  if (!(hi > lo)) return BandPlace::data_band_unknown;
+  if (b.hi < lo) return BandPlace::below;
+  if (b.lo > hi) return BandPlace::above;
+  if (b.lo >= lo && b.hi <= hi) return BandPlace::inside;
+  return BandPlace::overlapping;
 }
 
-nlohmann::ordered_json bands_json(const PassivityResult& p, double lo, double hi) {
-  nlohmann::ordered_json bands = nlohmann::ordered_json::array();
-  for (const auto& b : p.bands)
-    bands.push_back({{"f_lo_hz", b.lo}, {"f_hi_hz", std::isinf(b.hi) ? nlohmann::ordered_json("inf") : nlohmann::ordered_json(b.hi)},
-                     {"min_re", b.min_re}, {"at_hz", std::isinf(b.at) ? nlohmann::ordered_json("inf") : nlohmann::ordered_json(b.at)},
-                     {"where", relative_to_data(b, lo, hi)}});
-  return {{"passive", p.passive}, {"method", p.method}, {"crossings_hz", p.crossings}, {"negative_bands", bands},
-          {"min_re", p.min_re}, {"min_at_hz", std::isinf(p.min_at) ? nlohmann::ordered_json("inf") : nlohmann::ordered_json(p.min_at)}};
+PassivityDetails details(PassivityResult p, double lo, double hi) {
+  PassivityDetails d;
+  for (const auto& b : p.bands) d.places.push_back(place(b, lo, hi));
+  d.test = std::move(p);
+  return d;
 }
 
 void report_bands(CheckResult& r, const PassivityResult& p, const std::string& prefix, double lo, double hi) {
   for (const auto& b : p.bands)
     r.fail(fmt::format("{}Re G < 0 from {} to {} ({}), min Re G = {:.4g} at {}", prefix, hz(b.lo), hz(b.hi),
-                       relative_to_data(b, lo, hi), b.min_re, hz(b.at)));
-}
-
-bool causal(const MultipoleSurface& s) {
-  for (int q = 0; q < s.order.q(); ++q)
-    if (!(s.theta[Order::lambda(q)] > 0.0)) return false;
-  for (int k = 0; k < s.order.s(); ++k)
-    if (!(s.theta[s.order.alpha(k)] > 0.0)) return false;
-  return true;
-}
-
-bool stable(const codegen::DiscreteModel& m) {
-  for (const auto& t : m.real)
-    if (!(t.eps > 0.0 && t.eps < 2.0)) return false;
-  for (const auto& p : m.pair)
-    if (!(p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i < 0.0)) return false;
-  return true;
+                       band_place_text(place(b, lo, hi)), b.min_re, hz(b.at)));
 }
 
 }  // namespace
@@ -57,47 +38,39 @@ bool stable(const codegen::DiscreteModel& m) {
 CheckResult check_continuous_passivity(const CheckSubject& s) {
   CheckResult r;
   r.name = "passivity_continuous";
-  if (!causal(s.surface)) {
-    r.status = Status::not_applicable;
-    r.summary = "not causal (see causality): positive-realness needs every pole in the left half-plane";
-    return r;
-  }
+  if (!is_causal(s.surface.order, s.surface.theta.data()))
+    return r.not_applicable("not causal (see causality): positive-realness needs every pole in the left half-plane");
   const PassivityResult p = continuous_passivity(s.surface.order, s.surface.theta.data());
   r.method = "Re G(jw) >= 0 for all w >= 0: imaginary-axis eigenvalues of the Hamiltonian (" + p.method + ")";
   report_bands(r, p, "", s.data_f_min_hz, s.data_f_max_hz);
-  r.details = bands_json(p, s.data_f_min_hz, s.data_f_max_hz);
   r.summary = fmt::format("min Re G = {:.4g} at {}; {} crossing(s), {} negative band(s)", p.min_re, hz(p.min_at),
                           p.crossings.size(), p.bands.size());
+  r.details = details(p, s.data_f_min_hz, s.data_f_max_hz);
   return r;
 }
 
 CheckResult check_discrete_passivity(const CheckSubject& s) {
   CheckResult r;
   r.name = "passivity_discrete";
-  if (!s.header) {
-    r.status = Status::not_applicable;
-    r.summary = "a fit has no emitted coefficients (check the header made by admitgen emit)";
-    return r;
-  }
+  if (!s.header)
+    return r.not_applicable("a fit has no emitted coefficients (check the header made by admitgen emit)");
   r.method = "Re H(e^jtheta) >= 0 on [0, pi] of the emitted (quantised) coefficients: Hamiltonian test after the "
              "bilinear map z = (1 + s)/(1 - s)";
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  DiscretePassivityDetails d;
   double worst = std::numeric_limits<double>::infinity();
   std::string worst_text;
   for (const auto& rate : s.header->rates) {
-    if (!stable(rate.model)) {
-      rates.push_back({{"fs_hz", rate.fs_hz}, {"skipped", "unstable (see discrete_stability)"}});
+    if (!rate.model.stable()) {
+      d.rates.push_back({rate.fs_hz, std::nullopt});
       r.fail(fmt::format("fs {} Hz: not decidable, the filter is unstable (see discrete_stability)", rate.fs_hz));
       continue;
     }
     const PassivityResult p = discrete_passivity(rate.model);
     report_bands(r, p, fmt::format("fs {} Hz: ", rate.fs_hz), s.data_f_min_hz, s.data_f_max_hz);
-    auto j = bands_json(p, s.data_f_min_hz, s.data_f_max_hz);
-    j["fs_hz"] = rate.fs_hz;
-    rates.push_back(j);
+    d.rates.push_back({rate.fs_hz, details(p, s.data_f_min_hz, s.data_f_max_hz)});
     if (p.min_re < worst) worst = p.min_re, worst_text = fmt::format("{} (fs {} Hz)", hz(p.min_at), rate.fs_hz);
   }
-  r.details["rates"] = rates;
+  r.details = d;
   r.summary = std::isfinite(worst) ? fmt::format("min Re H = {:.4g} at {}", worst, worst_text) : "no stable rate";
   return r;
 }

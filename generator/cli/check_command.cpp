@@ -2,7 +2,9 @@
 #include "cli/check_command.hpp"
 
 #include "checks/check_suite.hpp"
+#include "cli/options.hpp"
 #include "io/check_input.hpp"
+#include "io/check_report.hpp"
 
 #include <fmt/core.h>
 
@@ -26,12 +28,12 @@ void setup_check_command(CLI::App& app, int& exit_code) {
 
 int run_check_command(const CheckOptions& o) {
   const auto subject = io::load_check_subject(o.file, o.order, parse_estimate(o.estimate));
-  if (!subject.note.empty()) fmt::print(stderr, "note: {}\n", subject.note);
+  if (!subject.note.empty()) fmt::print(stderr, "note: {}\n", spelled(subject.note));
   const auto report = checks::run_checks(subject);
   if (o.json)
-    fmt::print("{}\n", report.to_json().dump(2));
+    fmt::print("{}", io::check_report_json(report));
   else
-    fmt::print("{}", report.to_text());
+    fmt::print("{}", io::check_report_text(report));
   return report.passed() ? 0 : 1;
 }
 

@@ -25,6 +25,16 @@ namespace {
 
 using namespace admitgen::diagnosis;
 
+/// A --sim table, read with DiagnoseCommand::sim_read: the settings its errors name are those of the
+/// --sim table ("sim.columns", spelled --sim-columns).
+Measurement read_sim_table(const std::string& path, const ReadOptions& read) {
+  try {
+    return read_measurement(path, read);
+  } catch (const InputError& e) {
+    throw InputError(spell_settings(e.marked(), [](const std::string& key) { return setting("sim." + key); }, " "));
+  }
+}
+
 /// --sim names a CSV when such a file exists, a material SPEC otherwise.
 SimulatedSide simulated_side(const DiagnoseCommand& o, const Air& air) {
   if (o.fit) {
@@ -32,7 +42,7 @@ SimulatedSide simulated_side(const DiagnoseCommand& o, const Air& air) {
     return SimulatedSide::from_material(Material{surface}, air, "fit " + *o.fit + " (" + surface.order.name() + ", mean)");
   }
   if (std::filesystem::is_regular_file(*o.sim))
-    return SimulatedSide::from_table(read_measurement(*o.sim, o.sim_read), "table " + *o.sim);
+    return SimulatedSide::from_table(read_sim_table(*o.sim, o.sim_read), "table " + *o.sim);
   return SimulatedSide::from_material(parse_material_spec(*o.sim, io::read_fit_file), air, "SPEC " + *o.sim);
 }
 
@@ -133,7 +143,7 @@ int run_diagnose_command(const DiagnoseCommand& o) {
   write_file_atomically(path, io::diagnosis_text(record));
   report::write_diagnosis_report(o.out, record);
   if (!o.quiet) {
-    for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
+    for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
     print_summary(d, path);
   }
   // docs/cli.md: exit 1 when a diagnosis found a violation. diagnose's "violation" is a gap with an

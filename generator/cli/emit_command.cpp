@@ -79,11 +79,12 @@ int run_emit_command(const EmitCommand& o) {
   const auto& emission = result.emission;
   const std::string& header = result.header;
   if (!result.safe()) {
+    const std::string refusal = spelled(result.refusal(o.out)) + "\n(--allow-unsafe writes it anyway, for experts)";
     if (!o.allow_unsafe) {
-      fmt::print(stderr, "admitgen: {}\n", result.refusal(o.out));
+      fmt::print(stderr, "admitgen: {}\n", refusal);
       return 1;  // a check found a violation (exit code 1, docs/cli.md); nothing was written
     }
-    fmt::print(stderr, "warning: --allow-unsafe: {}\n", result.refusal(o.out));
+    fmt::print(stderr, "warning: --allow-unsafe: {}\n", refusal);
   }
   const std::string bands = o.bands_json.empty() ? "" : io::bands_text(emission);
   const std::string golden = o.golden.empty() ? "" : codegen::golden_vectors(emission, o.golden_seed);
@@ -96,7 +97,7 @@ int run_emit_command(const EmitCommand& o) {
                  r.model.fir.size(), r.model.real.size(), r.model.pair.size(), r.model.refit_max_rel_error,
                  r.model.plrc_max_rel_error, r.model.folded.empty() ? "" : "; folded " + std::to_string(r.model.folded.size()),
                  r.model.passive_rounds == 0 ? "" : fmt::format("; refit constrained to Re H >= 0 ({} rounds)", r.model.passive_rounds));
-    for (const auto& n : emission.notes) fmt::print("note: {}\n", n);
+    for (const auto& n : emission.notes) fmt::print("note: {}\n", spelled(n));
     fmt::print("wrote {} ({} {}, {}, {} estimate{})\n", o.out, emission.surface.order.name(), codegen::format_name(s.format), s.name,
                estimate_name(emission.estimate), result.safe() ? "; passes admitgen check" : "; UNSAFE");
   }

@@ -128,7 +128,7 @@ int run_fit_command(const FitCommand& o) {
   const ReadOptions& read = o.read;
   const FitSettings& settings = o.settings;
   const Measurement data = read_measurement(o.data, read);
-  if (o.cost_only || !o.quiet) fmt::print(stderr, "{}\n", estimate_fit_cost(data, settings).describe());
+  if (o.cost_only || !o.quiet) fmt::print(stderr, "{}\n", spelled(estimate_fit_cost(data, settings).describe()));
   if (o.cost_only) return 0;
   CreatedDirectories created(o.out);
   ensure_writable_directory(o.out);
@@ -144,7 +144,7 @@ int run_fit_command(const FitCommand& o) {
   report::write_fit_report(o.out, record, data);
   if (!o.quiet) {
     print_summary(fit, data);
-    for (const auto& w : *record.warnings) fmt::print(stderr, "warning: {}\n", w);
+    for (const auto& w : *record.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
     const auto& chosen = fit.models[fit.selected];
     fmt::print("selected {} ({}); wrote {}\n", chosen.order.name(), settings.rule.describe(), path);
     fmt::print("passive estimate of {} (what emit uses): relative RMS residual {:.3g} % (best sample {:.3g} %), {}\n",

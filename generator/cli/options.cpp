@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "cli/options.hpp"
 
+#include "core/errors.hpp"
+
 #include <map>
 #include <vector>
 
@@ -111,13 +113,24 @@ void add_tube_options(CLI::App& app, TubeSetup& tube) {
 }
 
 std::string flag_for(const std::string& key) {
+  // Keys are the fields of the settings structs the options bind to (ReadOptions, FitSettings,
+  // codegen::EmitSettings, StageRequest, SynthRequest, TubeSetup); a boolean turned off by a "--no-" flag
+  // is named with its condition.
   static const std::map<std::string, std::string> flags{
       {"band", "--band"},
       {"columns", "--columns"},
       {"data_count", "--likelihood-k"},
+      {"enforce_passivity = false", "--no-passivity-enforcement"},
+      {"estimate", "--estimate"},
+      {"fir_taps", "--fir-taps"},
+      {"format", "--format"},
       {"format.skip_rows", "--skip-rows"},
+      {"fs_hz", "--fs"},
       {"magnitude", "--magnitude"},
+      {"name", "--name"},
       {"noise_std", "--noise"},
+      {"order", "--order"},
+      {"passive", "--passive"},
       {"phase", "--phase-unit"},
       {"points", "--points"},
       {"qmax", "--qmax"},
@@ -125,6 +138,7 @@ std::string flag_for(const std::string& key) {
       {"reduce_symmetry = false", "--no-symmetry-reduction"},
       {"rho_c", "--rho-c"},
       {"rule", "--select"},
+      {"sampler.live", "--live"},
       {"sampler_kind", "--sampler"},
       {"smax", "--smax"},
       {"time_convention", "--time-convention"},
@@ -132,8 +146,15 @@ std::string flag_for(const std::string& key) {
       {"tube.mic1_distance_m", "--mic-distance"},
       {"tube.spacing_m", "--mic-spacing"},
   };
+  // The reading options of diagnose's --sim table (DiagnoseCommand::sim_read): "sim.columns" -> "--sim-columns".
+  if (key.rfind("sim.", 0) == 0) {
+    const std::string flag = flag_for(key.substr(4));
+    return flag.rfind("--", 0) == 0 ? "--sim-" + flag.substr(2) : key;
+  }
   const auto it = flags.find(key);
   return it == flags.end() ? key : it->second;
 }
+
+std::string spelled(const std::string& text) { return spell_settings(text, flag_for, " "); }
 
 }  // namespace admitgen::cli

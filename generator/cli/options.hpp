@@ -46,8 +46,12 @@ ReadOptions with_given_options(const CLI::App& app, const std::string& prefix, c
 /// The impedance tube (synth, diagnose): --tube-diameter, --mic-spacing, --mic-distance, --temperature.
 void add_tube_options(CLI::App& app, TubeSetup& tube);
 
-/// The command-line spelling of a setting named by a library error ("rho_c" -> "--rho-c"); an unknown
-/// key is returned as it is.
+/// The command-line spelling of a setting named by library text ("rho_c" -> "--rho-c"); an unknown
+/// key is returned as it is. The one table from settings to flags.
 std::string flag_for(const std::string& setting_key);
+
+/// Library text (a warning, a note, a refusal) as the command line prints it: each setting it names
+/// (core/errors.hpp, setting()) spelled as its flag, a value after it ("--quantity impedance").
+std::string spelled(const std::string& text);
 
 }  // namespace admitgen::cli

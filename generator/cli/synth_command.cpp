@@ -76,7 +76,7 @@ int run_synth_command(const SynthCommand& o) {
   const Synthesis result = synthesize(request);
   write_admittance_csv(o.out, request.f_hz, result.y, provenance(o, request, band));
   if (!o.quiet) {
-    for (const auto& w : result.warnings) fmt::print(stderr, "warning: {}\n", w);
+    for (const auto& w : result.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
     fmt::print("wrote {} points {}-{} Hz to {}\n", request.f_hz.size(), band.lo_hz, band.hi_hz, o.out);
   }
   return 0;

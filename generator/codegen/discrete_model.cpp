@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace admitgen::codegen {
 namespace {
@@ -129,7 +130,16 @@ int DiscreteModel::tail_samples(double decades) const {
   return static_cast<int>(std::min(n, double(1 << 26))) + static_cast<int>(fir.size()) + 1;
 }
 
+bool inside_unit_circle(const RealTerm& t) { return t.eps > 0.0 && t.eps < 2.0; }
+bool inside_unit_circle(const PairTerm& p) { return p.e_r * (2.0 + p.e_r) + p.p_i * p.p_i < 0.0; }
+
+bool DiscreteModel::stable() const {
+  return std::all_of(real.begin(), real.end(), [](const RealTerm& t) { return inside_unit_circle(t); }) &&
+         std::all_of(pair.begin(), pair.end(), [](const PairTerm& p) { return inside_unit_circle(p); });
+}
+
 double DiscreteModel::l1_norm() const {
+  if (!stable()) return std::numeric_limits<double>::infinity();
   const auto h = impulse_response(tail_samples(12.0));
   double s = 0.0;
   for (double v : h) s += std::abs(v);
@@ -155,9 +165,9 @@ void require_representable(const Order& order, const Eigen::VectorXd& theta, dou
   if (data_f_hz.empty()) throw InputError("the fit lists no data frequencies to refit at");
   const double f_top = *std::max_element(data_f_hz.begin(), data_f_hz.end());
   if (f_top >= 0.45 * fs_hz)
-    throw InputError(fmt::format("--fs {:g} Hz: the fit's data reach {:g} Hz, beyond 0.45 fs = {:g} Hz; a discrete "
+    throw InputError(fmt::format("{} Hz: the fit's data reach {:g} Hz, beyond 0.45 fs = {:g} Hz; a discrete "
                                  "filter at this rate cannot reproduce them (use fs > {:g} Hz)",
-                                 fs_hz, f_top, 0.45 * fs_hz, f_top / 0.45));
+                                 setting("fs_hz", fmt::format("{:g}", fs_hz)), f_top, 0.45 * fs_hz, f_top / 0.45));
 }
 
 /// The discrete poles (numerators still zero): each pole's exact image e^{−aT} in delta / coupled form, or

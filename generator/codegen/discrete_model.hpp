@@ -50,6 +50,11 @@ struct PairTerm {
   std::complex<double> c;          ///< output coefficient: y += 2 Re(c ψ) = 2 c_r ξ − 2 c_i η
 };
 
+/// |z| < 1 of a term's pole, decided in double: z = 1 − ε for a real term, |1 + e_r + j p_i|² < 1 for a
+/// pair (exact for f32 coefficients; the discrete_stability check decides q31/q15 in integers).
+bool inside_unit_circle(const RealTerm& term);
+bool inside_unit_circle(const PairTerm& term);
+
 struct DiscreteModel {
   double fs_hz = 0.0;
   std::vector<double> fir;  ///< d_0 … d_{L−1}
@@ -70,7 +75,10 @@ struct DiscreteModel {
   /// here: codegen/runtime_filter.hpp runs the runtime's own kernels.
   std::vector<double> filter(const std::vector<double>& u) const;
   std::vector<double> impulse_response(int n) const;
-  /// Σ|h[n]| over n < until the tail is below 1e-12 of the peak (bounds |y| for |u| ≤ 1).
+  /// Every pole strictly inside the unit circle (inside_unit_circle).
+  bool stable() const;
+  /// Σ|h[n]| over n < until the tail is below 1e-12 of the peak (bounds |y| for |u| ≤ 1); +∞ when the
+  /// filter is not stable.
   double l1_norm() const;
   /// Samples until every pole's envelope has decayed by `decades` decades.
   int tail_samples(double decades) const;

@@ -267,14 +267,16 @@ DiscreteModel model_from_tables(const Json& j, double fs) {
 /// Rates integral in [1 kHz, 1 MHz] and distinct; the name a C identifier.
 void validate(const EmitSettings& settings) {
   if (!std::regex_match(settings.name, std::regex("[A-Za-z_][A-Za-z0-9_]{0,63}")))
-    throw InputError(fmt::format("--name '{}' is not a C identifier (letters, digits, '_'; not starting with a digit)",
-                                 settings.name));
-  if (settings.fs_hz.empty()) throw InputError("at least one --fs is required");
+    throw InputError(fmt::format("{} is not a C identifier (letters, digits, '_'; not starting with a digit)",
+                                 setting("name", "'" + settings.name + "'")));
+  if (settings.fs_hz.empty()) throw InputError("at least one " + setting("fs_hz") + " is required");
   std::set<int> seen;
   for (double fs : settings.fs_hz) {
     if (!(fs >= 1000.0 && fs <= 1e6) || fs != std::floor(fs))
-      throw InputError(fmt::format("--fs {:g}: sample rates must be whole numbers of Hz in [1000, 1000000]", fs));
-    if (!seen.insert(static_cast<int>(fs)).second) throw InputError(fmt::format("--fs {:g} is given twice", fs));
+      throw InputError(fmt::format("{}: sample rates must be whole numbers of Hz in [1000, 1000000]",
+                                   setting("fs_hz", fmt::format("{:g}", fs))));
+    if (!seen.insert(static_cast<int>(fs)).second)
+      throw InputError(fmt::format("{} is given twice", setting("fs_hz", fmt::format("{:g}", fs))));
   }
 }
 
@@ -333,6 +335,13 @@ Json enforcement_json(const std::optional<PassivityEnforcement>& p) {
               {"max_rel_change_outside_data_band", p->max_rel_change_outside_data_band}};
 }
 
+/// The notes as files read them: each setting named by its bare key (core/errors.hpp, plain_settings).
+std::vector<std::string> plain_notes(const std::vector<std::string>& notes) {
+  std::vector<std::string> plain;
+  for (const auto& n : notes) plain.push_back(plain_settings(n));
+  return plain;
+}
+
 Json emission_json(const Emission& e) {
   Json rates = Json::array();
   for (const auto& r : e.rates) {
@@ -361,7 +370,7 @@ Json emission_json(const Emission& e) {
                                                             e.surface.theta.data() + e.surface.theta.size())}}},
               {"data_f_min_hz", *std::min_element(e.data_f_hz.begin(), e.data_f_hz.end())},
               {"data_f_max_hz", *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end())},
-              {"notes", e.notes},
+              {"notes", plain_notes(e.notes)},
               {"passivity_enforcement", enforcement_json(e.enforcement)},
               {"rates", rates}};
 }
@@ -374,24 +383,17 @@ std::string render_header(const Emission& e, const std::string& template_text, c
   TemplateContext c;
   const auto& s = e.settings;
   const std::string fmt_name = format_name(s.format);
-  std::vector<std::string> fs_args, rate_list;
-  for (const auto& r : e.rates) {
-    fs_args.push_back(fmt::format("--fs {}", r.fs_hz));
-    rate_list.push_back(std::to_string(r.fs_hz));
-  }
-  std::string extra;
-  if (!s.order.empty()) extra += " --order " + e.surface.order.name();
-  if (s.estimate != Estimate::passive) extra += fmt::format(" --estimate {}", estimate_name(s.estimate));
-  if (s.fir_taps > 0) extra += fmt::format(" --fir-taps {}", s.fir_taps);
+  std::vector<std::string> rate_list;
+  for (const auto& r : e.rates) rate_list.push_back(std::to_string(r.fs_hz));
   c.values = {{"file", file_name},
               {"version", kVersion},
               {"fit_name", e.fit_name},
-              {"fs_args", join(fs_args, " ")},
               {"format", fmt_name},
               {"FORMAT", upper(fmt_name)},
               {"name", s.name},
               {"NAME", upper(s.name)},
-              {"extra_args", extra},
+              {"estimate_key", estimate_name(s.estimate)},
+              {"fir_taps", std::to_string(s.fir_taps)},
               {"input_sha256", e.input_sha256},
               {"order", e.surface.order.name()},
               {"estimate", e.estimate == Estimate::passive ? "passive estimate: best sample's poles, residues refitted under Re G >= 0"
@@ -419,7 +421,13 @@ std::string render_header(const Emission& e, const std::string& template_text, c
                                       {"last", i + 1 == e.surface.theta.size() ? "" : ","}}));
   for (const auto& r : e.rates) c.lists["rates"].push_back(rate_context(r, s.format));
   c.lists["notes"] = {};
-  for (const auto& n : e.notes) c.lists["notes"].push_back(item({{"text", n}}));
+  for (const auto& n : e.notes) c.lists["notes"].push_back(item({{"text", plain_settings(n)}}));
+  // The settings that differ from emit's defaults, for the command that regenerates the header (the
+  // template spells them as the command line's options).
+  c.lists["order_chosen"] = pad_if(!s.order.empty());
+  c.lists["estimate_chosen"] = pad_if(s.estimate != Estimate::passive);
+  c.lists["fir_taps_chosen"] = pad_if(s.fir_taps > 0);
+  c.lists["enforcement_off"] = pad_if(!s.enforce_passivity);
   c.lists["is_f32"] = pad_if(s.format == Format::f32);
   c.lists["is_fixed"] = pad_if(s.format != Format::f32);
   c.lists["octave"] = band_rows(e.octave);
@@ -428,7 +436,8 @@ std::string render_header(const Emission& e, const std::string& template_text, c
 }
 
 std::string golden_vectors(const Emission& e, std::uint64_t seed) {
-  if (e.settings.format == Format::f32) throw InputError("--golden needs --format q31 or q15 (f32 is not bit-exact)");
+  if (e.settings.format == Format::f32)
+    throw InputError("golden vectors need " + setting("format") + " q31 or q15 (f32 is not bit-exact)");
   const EmittedRate& r = e.rates.front();
   const FixedCoefficients& q = *r.fixed;
   const std::int32_t full = q.format == Format::q31 ? INT32_MAX : INT16_MAX;

@@ -14,11 +14,25 @@
 
 namespace admitgen {
 
-/// Names the setting at fault inside an error message: `key` is the settings field as a library caller
-/// writes it ("rho_c", "tube.diameter_m", "fs_hz"; "settings struct field" spelled as in the struct).
-/// The message keeps a mark around the key, so that InputError can tell which settings it names and a
-/// front end can respell them (the CLI writes its flag, "--rho-c"); what() shows the bare key.
+/// Names a setting inside a message: `key` is the settings field as a library caller writes it
+/// ("rho_c", "tube.diameter_m", "fs_hz"; a condition such as "enforce_passivity = false" for a boolean
+/// turned off). The message keeps a mark around the key, so that a front end can respell it (the CLI writes
+/// its flag, "--rho-c": cli::flag_for) and everyone else reads the bare key (plain_settings()). Library
+/// text never spells a command-line flag itself (docs/architecture.md, "Settings named in library text").
 std::string setting(const std::string& key);
+/// A setting with the value to give it ("quantity", "impedance"): plain "quantity=impedance", the CLI
+/// "--quantity impedance".
+std::string setting(const std::string& key, const std::string& value);
+
+/// `text` with each setting it names (setting()) spelled by `spell_key(key)`; a setting given with a value
+/// reads `spell_key(key) + value_separator + value`.
+std::string spell_settings(const std::string& text, const std::function<std::string(const std::string& key)>& spell_key,
+                           const std::string& value_separator);
+/// `text` with each setting by its bare key ("rho_c", "quantity=impedance"): what files and library
+/// callers read (InputError::what(), the warnings written to fit.json and diagnosis.json).
+std::string plain_settings(const std::string& text);
+/// The keys of the settings `text` names, in order of appearance (repeats kept).
+std::vector<std::string> named_settings(const std::string& text);
 
 /// Bad user input: a malformed data file, an impossible option, an unwritable path. Exit code 2.
 /// The message may name settings (setting()); what() spells each by its key.
@@ -28,9 +42,11 @@ class InputError : public std::runtime_error {
   explicit InputError(const char* message) : InputError(std::string(message)) {}
 
   /// The keys of the settings the message names, in order of appearance (repeats kept).
-  std::vector<std::string> settings() const;
-  /// The message with each named setting spelled by `spell(key)`.
-  std::string spelled(const std::function<std::string(const std::string& key)>& spell) const;
+  std::vector<std::string> settings() const { return named_settings(marked_); }
+  /// The message with each named setting spelled by `spell(key)` (a value follows after a space).
+  std::string spelled(const std::function<std::string(const std::string& key)>& spell) const {
+    return spell_settings(marked_, spell, " ");
+  }
   /// The message with its marks, for an error that quotes another one's (keeps its settings named).
   const std::string& marked() const { return marked_; }
 

@@ -31,10 +31,11 @@ bool too_large(const Eigen::ArrayXcd& y) { return y.abs().minCoeff() > kPlausibl
 bool plausible_scale(const Eigen::ArrayXcd& y) { return y.allFinite() && !too_small(y) && !too_large(y); }
 
 std::string flags(const Candidate& c, bool rho_c_given) {
-  std::string out = fmt::format("--quantity {}", quantity_name(c.quantity));
+  std::string out = setting("quantity", quantity_name(c.quantity));
   if (c.rho_c)
-    out += rho_c_given ? fmt::format(" --rho-c {:g}", *c.rho_c)
-                       : fmt::format(" --rho-c RHO_C (rho0*c0 of the air in the tube in Pa s/m, {} at 20 C)", kTypicalRhoC);
+    out += rho_c_given ? " " + setting("rho_c", fmt::format("{:g}", *c.rho_c))
+                       : fmt::format(" {} (rho0*c0 of the air in the tube in Pa s/m, {} at 20 C)",
+                                     setting("rho_c", "RHO_C"), kTypicalRhoC);
   return out;
 }
 
@@ -49,14 +50,17 @@ std::string scale_hint(const ReadingForChecks& r) {
     if ((c.quantity != r.quantity || c.rho_c.has_value() != r.options.rho_c.has_value()) &&
         plausible_scale(admittance_as(r.values, c)))
       fits.push_back(flags(c, r.options.rho_c.has_value()));
-  if (fits.empty()) return "no other reading of these numbers is plausible either: check --columns, --quantity and --rho-c";
+  if (fits.empty())
+    return fmt::format("no other reading of these numbers is plausible either: check {}, {} and {}", setting("columns"),
+                       setting("quantity"), setting("rho_c"));
   std::string out = "read as ";
   for (std::size_t i = 0; i < fits.size(); ++i) out += (i > 0 ? ", or as " : "") + fits[i];
   return out + (fits.size() > 1 ? ", they are plausible (the first is the usual case)" : ", they are plausible");
 }
 
 std::string reading_name(const ReadingForChecks& r) {
-  return fmt::format("{} {}", r.options.rho_c ? fmt::format("SI (--rho-c {:g})", *r.options.rho_c) : "normalised",
+  return fmt::format("{} {}", r.options.rho_c ? fmt::format("SI ({})", setting("rho_c", fmt::format("{:g}", *r.options.rho_c)))
+                                             : "normalised",
                      quantity_name(r.quantity));
 }
 
@@ -89,9 +93,9 @@ void check_passive(const ReadingForChecks& r, std::vector<std::string>& warnings
   if (2 * negative > r.y.size())
     report(r.options.plausibility_errors, r.path,
            fmt::format("Re y < 0 at {} of {} frequencies: a passive surface absorbs (Re y >= 0, in either time "
-                       "convention); check that --columns selects the right re and im (or mag and phase) columns "
-                       "and that --quantity is right",
-                       negative, r.y.size()),
+                       "convention); check that {} selects the right re and im (or mag and phase) columns "
+                       "and that {} is right",
+                       negative, r.y.size(), setting("columns"), setting("quantity")),
            warnings);
 }
 
@@ -106,13 +110,14 @@ void check_time_convention(const ReadingForChecks& r, std::vector<std::string>& 
   const std::string what = fmt::format(
       "Im y < 0 at the {} lowest frequencies ({:g}-{:g} Hz) read in the e^{{{}jwt}} convention: a porous or resonant "
       "layer on a rigid backing has Im y > 0 there (stiffness-controlled). The file probably uses the other time "
-      "convention: give --time-convention {}",
-      low, r.f_hz[0], r.f_hz[low - 1], minus ? "-" : "+", other);
+      "convention: give {}",
+      low, r.f_hz[0], r.f_hz[low - 1], minus ? "-" : "+", setting("time_convention", other));
   if (r.options.time_convention)  // the user chose the convention: say it, do not refuse
     warnings.push_back(fmt::format("{}: {} (or keep it if the surface is mass-like at low frequency)", r.path, what));
   else
     report(r.options.plausibility_errors, r.path,
-           what + "; if the surface really is mass-like at low frequency, give --time-convention +jwt to confirm",
+           what + "; if the surface really is mass-like at low frequency, give " + setting("time_convention", "+jwt") +
+               " to confirm",
            warnings);
 }
 

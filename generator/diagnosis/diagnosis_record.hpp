@@ -118,7 +118,7 @@ struct DiagnosisInputRecord {
   std::string real_path, real_sha256, sim;
   std::int64_t points = 0;
   double f_min_hz = 0.0, f_max_hz = 0.0, level_rms_y = 0.0;
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings;  ///< may name settings (core/errors.hpp, setting())
 };
 
 struct DiagnosisRecord {

@@ -58,8 +58,9 @@ std::vector<StageGap> attribute_stages(const Eigen::ArrayXd& f_hz, const Eigen::
                                        const StageRequest& request) {
   const double f_max = f_hz[f_hz.size() - 1];
   if (!(f_max < 0.45 * request.fs_hz))
-    throw InputError(fmt::format("--fs {:g}: the data reach {:g} Hz, above 0.45 fs; raise --fs or narrow --band",
-                                 request.fs_hz, f_max));
+    throw InputError(fmt::format("{}: the data reach {:g} Hz, above 0.45 fs; raise {} or narrow {}",
+                                 setting("fs_hz", fmt::format("{:g}", request.fs_hz)), f_max, setting("fs_hz"),
+                                 setting("band")));
   codegen::EmitSettings settings;
   settings.fs_hz = {request.fs_hz};
   settings.format = request.format;

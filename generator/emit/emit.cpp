@@ -5,6 +5,7 @@
 #include "checks/passivity.hpp"
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
+#include "model/multipole_surface.hpp"
 #include "model/passivity.hpp"
 #include "passivity/passive_residues.hpp"
 
@@ -53,10 +54,7 @@ std::vector<double> discrete_passivity_violations(const codegen::DiscreteModel& 
 
 void enforce_continuous_passivity(codegen::EmissionSource& source) {
   const Order& order = source.surface.order;
-  for (int q = 0; q < order.q(); ++q)
-    if (!(source.surface.theta[Order::lambda(q)] > 0.0)) return;  // non-causal: causality check refuses it
-  for (int s = 0; s < order.s(); ++s)
-    if (!(source.surface.theta[order.alpha(s)] > 0.0)) return;
+  if (!is_causal(order, source.surface.theta.data())) return;  // non-causal: the causality check refuses it
   const PassivityResult before = continuous_passivity(order, source.surface.theta.data());
   if (before.passive) return;
   const Eigen::ArrayXd f = Eigen::Map<const Eigen::ArrayXd>(source.data_f_hz.data(), Eigen::Index(source.data_f_hz.size()));
@@ -104,7 +102,7 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
     enforce_continuous_passivity(source);
     settings.passivity_violations = discrete_passivity_violations;
   } else {
-    source.notes.push_back("emitted without passivity enforcement (--no-passivity-enforcement)");
+    source.notes.push_back("emitted without passivity enforcement (" + setting("enforce_passivity = false") + ")");
   }
   EmitResult r;
   for (double margin : kMargins) {
@@ -128,17 +126,17 @@ std::string EmitResult::refusal(const std::string& out) const {
   if (has("causality"))
     next = "the model has a pole with lambda or alpha <= 0: re-run admitgen fit (the default estimate is always causal)";
   else if ((has("passivity_discrete") || has("passivity_continuous")) && !emission.settings.enforce_passivity)
-    next = "drop --no-passivity-enforcement: emit then makes the model and the refit passive";
+    next = "drop " + setting("enforce_passivity = false") + ": emit then makes the model and the refit passive";
   else if (has("passivity_discrete") || has("passivity_continuous"))
-    next = "the passive refit could not be certified at this rate and format: try a higher --fs, --format f32, "
-           "or --fir-taps 1..8; `admitgen check` on the written header shows the bands";
+    next = fmt::format("the passive refit could not be certified at this rate and format: try a higher {}, {}, or {}; "
+                       "`admitgen check` on the written header shows the bands",
+                       setting("fs_hz"), setting("format", "f32"), setting("fir_taps", "1..8"));
   else if (has("headroom") || has("limit_cycle"))
-    next = "fixed-point range: try --format q31 (or f32) instead of q15";
+    next = "fixed-point range: try " + setting("format", "q31") + " (or f32) instead of q15";
   else
     next = "re-run admitgen emit; if it persists, report it with the fit.json";
-  return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}\n"
-                     "(--allow-unsafe writes it anyway, for experts)",
-                     out, fmt::join(failed, ", "), why, next);
+  return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}", out,
+                     fmt::join(failed, ", "), why, next);
 }
 
 }  // namespace admitgen::emit

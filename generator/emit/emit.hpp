@@ -27,6 +27,8 @@ struct EmitResult {
   checks::CheckReport report; ///< admitgen check of that text
   bool safe() const { return report.passed(); }
   /// Empty when safe; otherwise the failures and the next step to take, for a header written to `out`.
+  /// The advice names settings (core/errors.hpp, setting()): plain_settings() reads them by their keys,
+  /// the command line spells them as its flags.
   std::string refusal(const std::string& out) const;
 };
 

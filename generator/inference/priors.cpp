@@ -17,6 +17,17 @@ constexpr std::pair<Family, const char*> kFamilyKeys[] = {
     {Family::g_inf, "G_inf"}, {Family::a, "A"},         {Family::lambda, "lambda"}, {Family::b, "B"},
     {Family::c, "C"},         {Family::alpha, "alpha"}, {Family::beta, "beta"}};
 
+/// Sorts the real poles (λ_q, A_q) of `v` by λ (θ, or u where λ is monotone): their canonical labels.
+void sort_real_poles(const Order& order, double* v) {
+  std::vector<std::pair<double, double>> poles;  // (λ, A)
+  for (int q = 0; q < order.q(); ++q) poles.emplace_back(v[Order::lambda(q)], v[Order::a(q)]);
+  std::sort(poles.begin(), poles.end());
+  for (int q = 0; q < order.q(); ++q) {
+    v[Order::lambda(q)] = poles[static_cast<std::size_t>(q)].first;
+    v[Order::a(q)] = poles[static_cast<std::size_t>(q)].second;
+  }
+}
+
 }  // namespace
 
 const Range& PriorRanges::of(Family f) const { return const_cast<PriorRanges*>(this)->of(f); }
@@ -95,23 +106,11 @@ void PriorTransform::fold(double* u) const {
     u[order_.c(s)] = p[2];
     u[order_.beta(s)] = p[3];
   }
-  std::vector<std::pair<double, double>> poles;  // (λ, A) in u
-  for (int q = 0; q < order_.q(); ++q) poles.emplace_back(u[Order::lambda(q)], u[Order::a(q)]);
-  std::sort(poles.begin(), poles.end());
-  for (int q = 0; q < order_.q(); ++q) {
-    u[Order::lambda(q)] = poles[static_cast<std::size_t>(q)].first;
-    u[Order::a(q)] = poles[static_cast<std::size_t>(q)].second;
-  }
+  sort_real_poles(order_, u);  // λ is monotone in u
 }
 
 void fold_to_reduced(const Order& order, double* theta) {
-  std::vector<std::pair<double, double>> poles;  // (λ, A)
-  for (int q = 0; q < order.q(); ++q) poles.emplace_back(theta[Order::lambda(q)], theta[Order::a(q)]);
-  std::sort(poles.begin(), poles.end());
-  for (int q = 0; q < order.q(); ++q) {
-    theta[Order::lambda(q)] = poles[static_cast<std::size_t>(q)].first;
-    theta[Order::a(q)] = poles[static_cast<std::size_t>(q)].second;
-  }
+  sort_real_poles(order, theta);
   std::vector<std::array<double, 4>> pairs;  // (β, B, C, α) with β ≥ 0
   for (int s = 0; s < order.s(); ++s) {
     const double sign = theta[order.beta(s)] < 0.0 ? -1.0 : 1.0;

@@ -325,7 +325,7 @@ std::string diagnosis_text(const DiagnosisRecord& d) {
                     {"f_min_hz", d.input.f_min_hz},
                     {"f_max_hz", d.input.f_max_hz},
                     {"level_rms_y", d.input.level_rms_y},
-                    {"warnings", d.input.warnings}};
+                    {"warnings", plain_texts(d.input.warnings)}};
   j["settings"] = settings_json(d.settings);
   j["gap"] = gap_json(d.gap);
   j["stages"] = Json::array();

@@ -91,7 +91,7 @@ Json model_json(const FitModel& m) {
                             {"relative_rms_residual", m.goodness_of_fit->relative_rms_residual},
                             {"max_abs_delta_alpha", m.goodness_of_fit->max_abs_delta_alpha}};
   if (m.sampler) j["sampler"] = *m.sampler;
-  if (m.sampler_note) j["sampler_note"] = *m.sampler_note;
+  if (m.sampler_note) j["sampler_note"] = plain_settings(*m.sampler_note);
   if (m.truncation) {
     j["truncation_correction_nats"] = m.truncation->correction_nats;
     j["truncation_correction_error_nats"] = m.truncation->correction_error_nats;
@@ -286,7 +286,7 @@ std::string fit_text(const FitRecord& fit) {
          {"selected", {{"order", fit.selected_order}, {"rule", fit.selected_rule}}},
          {"parameters", parameters_json(fit.parameters)}};
   if (fit.predictive) j["predictive"] = predictive_json(*fit.predictive);
-  if (fit.warnings) j["warnings"] = *fit.warnings;
+  if (fit.warnings) j["warnings"] = plain_texts(*fit.warnings);
   if (fit.posterior) j["posterior"] = *fit.posterior;
   return j.dump(2) + "\n";
 }

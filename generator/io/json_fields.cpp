@@ -98,6 +98,12 @@ std::array<double, 2> Field::number_pair() const {
   return {v[0], v[1]};
 }
 
+Json plain_texts(const std::vector<std::string>& texts) {
+  Json out = Json::array();
+  for (const auto& t : texts) out.push_back(plain_settings(t));
+  return out;
+}
+
 Json numbers_by_name_json(const std::vector<std::pair<std::string, double>>& values) {
   Json out = Json::object();
   for (const auto& [name, v] : values) out[name] = v;

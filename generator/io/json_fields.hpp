@@ -33,6 +33,10 @@ bool newer_than_this_admitgen(const std::string& version);
 /// Field::numbers_by_name).
 Json numbers_by_name_json(const std::vector<std::pair<std::string, double>>& values);
 
+/// The JSON array of `texts` (warnings, notes), each setting they name spelled by its bare key
+/// (core/errors.hpp, plain_settings): files name settings, never command-line flags.
+Json plain_texts(const std::vector<std::string>& texts);
+
 /// One JSON value and where it is, for conversions with errors naming both.
 class Field {
  public:

@@ -98,7 +98,7 @@ struct FitModel {
   std::optional<double> log_passive_prior_fraction;    ///< with --passive
   std::optional<FitGoodness> goodness_of_fit;          ///< absent in older fits
   std::optional<std::string> sampler;                  ///< absent in older fits
-  std::optional<std::string> sampler_note;
+  std::optional<std::string> sampler_note;  ///< may name settings (core/errors.hpp, setting())
   std::optional<FitTruncation> truncation;
 };
 
@@ -121,7 +121,9 @@ struct FitRecord {
   std::string selected_order, selected_rule;
   std::vector<FitParameter> parameters;        ///< the selected order's
   std::optional<FitPredictive> predictive;     ///< absent in older fits
-  std::optional<std::vector<std::string>> warnings;  ///< absent in older fits
+  /// Absent in older fits. Texts may name settings (core/errors.hpp, setting()): writers of files and
+  /// reports give them plain_settings(), the command line spells each as its flag.
+  std::optional<std::vector<std::string>> warnings;
   std::optional<std::string> posterior;        ///< file name of the posterior index, when written
 
   /// The "models" entry of `order` (empty: the selected order), compared as parsed orders (Order::parse,

@@ -47,6 +47,14 @@ bool fit_has_passive_estimate(const FitRecord& fit, const std::string& order, co
   return model_entry(fit, order, origin).passive_estimate.has_value();
 }
 
+bool is_causal(const Order& order, const double* theta) {
+  for (int q = 0; q < order.q(); ++q)
+    if (!(theta[Order::lambda(q)] > 0.0)) return false;
+  for (int k = 0; k < order.s(); ++k)
+    if (!(theta[order.alpha(k)] > 0.0)) return false;
+  return true;
+}
+
 std::vector<std::string> causality_violations(const MultipoleSurface& surface) {
   const Order& o = surface.order;
   const auto& th = surface.theta;
@@ -95,8 +103,8 @@ MultipoleSurface multipole_from_fit(const FitRecord& fit, const std::string& ord
   if (estimate == Estimate::passive) {
     if (!m.passive_estimate)
       throw InputError(fmt::format("{}: order {} has no passive estimate (written by an older admitgen): re-run "
-                                   "admitgen fit, or choose --estimate mean or max_likelihood",
-                                   origin, m.order));
+                                   "admitgen fit, or choose {} mean or max_likelihood",
+                                   origin, m.order, setting("estimate")));
     for (const auto& [name, v] : m.passive_estimate->parameters) values[name] = v;
     return multipole_from_parameters(values, origin, causality);
   }

@@ -30,6 +30,9 @@ enum class Causality { required, reported };
 /// included), naming the parameter and its value; empty when every pole is in the open left half-plane
 /// (docs/physics.md §2.1). The causality check and the readers' refusals share these words.
 std::vector<std::string> causality_violations(const MultipoleSurface& surface);
+/// Whether every pole of θ (packed as `order` says) is in the open left half-plane: λ_q > 0 and α_s > 0
+/// (NaN fails); exactly when causality_violations lists nothing.
+bool is_causal(const Order& order, const double* theta);
 
 /// Builds θ from fit.json names (G_inf, A_q, lambda_q, B_s, C_s, alpha_s, beta_s). The order is the
 /// one the names imply (Q = number of A_q, S = number of B_s); every parameter of that order must be

@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
+#include "model/multipole_surface.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -272,10 +273,7 @@ PassivityResult continuous_passivity(const Order& order, const double* theta) {
 }
 
 bool is_passive(const Order& order, const double* theta) {
-  for (int q = 0; q < order.q(); ++q)
-    if (!(theta[Order::lambda(q)] > 0.0)) return false;
-  for (int k = 0; k < order.s(); ++k)
-    if (!(theta[order.alpha(k)] > 0.0)) return false;
+  if (!is_causal(order, theta)) return false;
   const double g_inf = theta[Order::g_inf()];
   if (g_inf < 0.0) return false;
   bool termwise = true;

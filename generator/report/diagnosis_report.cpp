@@ -236,7 +236,7 @@ std::string diagnosis_report_html(const DiagnosisRecord& d) {
           gap_summary(d.gap);
   body += "<h2>Pipeline stages</h2>\n";
   if (d.stages.empty())
-    body += "<p class=\"muted\">No stage attribution: run <code>admitgen diagnose --fit FIT.json --fs HZ</code> to see how "
+    body += "<p class=\"muted\">No stage attribution: a diagnosis against a fit (fit.json) at a sample rate shows how "
             "much the fit, discretization, quantization and simulation each add.</p>\n";
   else
     body += figure(figures[1].svg(), "Gap that each stage of fit → filter → fixed point → simulation adds on its own, and "

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "report/page.hpp"
 
+#include "core/errors.hpp"
 #include "core/version.hpp"
 #include "plot/format.hpp"
 
@@ -105,7 +106,7 @@ std::string definitions(const std::vector<std::pair<std::string, std::string>>& 
 std::string warnings_box(const std::vector<std::string>& warnings) {
   if (warnings.empty()) return {};
   std::string out = "<div class=\"warnings\" role=\"note\"><strong>Warnings</strong><ul>";
-  for (const auto& w : warnings) out += "<li>" + plot::escape_xml(w) + "</li>";
+  for (const auto& w : warnings) out += "<li>" + plot::escape_xml(plain_settings(w)) + "</li>";
   return out + "</ul></div>\n";
 }
 

@@ -82,7 +82,7 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
   } else if (settings.passive) {
     // Passivity depends on the residues, which the pole sampler integrates over the whole box.
     result = run_full(data, order, settings, progress, round);
-    result.sampler_note = "--passive needs the residues in the sampled space";
+    result.sampler_note = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
   } else {
     result = run_poles(data, order, settings, progress, round);
     constexpr double kMinEssRatio = 0.5;
@@ -206,9 +206,9 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
     const ModelResult &big = models[m.order], &small = models[m.contained];
     warnings.push_back(fmt::format(
         "{}: best ln L {:.1f} is below {:.1f} of the nested order {}; the sampler missed a mode of {}, whose ln Z is "
-        "underestimated (rerun with more --live points)",
+        "underestimated (rerun with more live points, {})",
         big.order.name(), big.run.max_log_likelihood, small.run.max_log_likelihood, small.order.name(),
-        big.order.name()));
+        big.order.name(), setting("sampler.live")));
   }
   return warnings;
 }

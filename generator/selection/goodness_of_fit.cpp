@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "selection/goodness_of_fit.hpp"
 
+#include "core/errors.hpp"
 #include "inference/posterior.hpp"
 #include "model/multipole.hpp"
 
@@ -25,9 +26,9 @@ GoodnessOfFit goodness_of_fit(const Measurement& data, const ModelResult& model)
 std::optional<std::string> poor_fit_warning(const std::string& order, const GoodnessOfFit& g) {
   if (!(g.relative_rms > kPoorRelativeRms) && !(g.max_abs_delta_alpha > kPoorDeltaAlpha)) return std::nullopt;
   return fmt::format("{} fits poorly: relative RMS residual {:.3g} (threshold {}), max |delta alpha| {:.3g} "
-                     "(threshold {}); check how the data were read (--quantity, --rho-c, --time-convention) or "
-                     "allow a larger order",
-                     order, g.relative_rms, kPoorRelativeRms, g.max_abs_delta_alpha, kPoorDeltaAlpha);
+                     "(threshold {}); check how the data were read ({}, {}, {}) or allow a larger order",
+                     order, g.relative_rms, kPoorRelativeRms, g.max_abs_delta_alpha, kPoorDeltaAlpha,
+                     setting("quantity"), setting("rho_c"), setting("time_convention"));
 }
 
 }  // namespace admitgen

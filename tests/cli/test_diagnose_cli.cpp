@@ -102,7 +102,9 @@ TEST_CASE("diagnose CLI: a --sim table in another layout is read with the --sim-
     CHECK(other["effects"][i]["log_evidence"].get<double>() ==
           doctest::Approx(plain["effects"][i]["log_evidence"].get<double>()).epsilon(1e-9));
   }
-  CHECK(run_admitgen(common + " --sim " + dir + "/sim_z.txt --out " + dir + "/bad").exit_code == 2);
+  const auto bad = run_admitgen(common + " --sim " + dir + "/sim_z.txt --out " + dir + "/bad");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("--sim-columns") != std::string::npos);  // the fix for the --sim table, not --columns
   CHECK_FALSE(std::filesystem::exists(dir + "/bad"));
 }
 

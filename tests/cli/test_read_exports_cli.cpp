@@ -72,15 +72,19 @@ TEST_CASE("fit cli: the two readings that used to succeed silently now fail and 
   // e^{-iwt} data: was a 39 % residual at exit 0.
   const Written minus = write_case(dir, find("z_minus_silent.csv"));
   refused(minus, "", "give --time-convention -jwt");
-  // Demoted to a warning on request: in fit.json and on stderr, with the fit's poor goodness of fit.
+  // Demoted to a warning on request: in fit.json (naming the setting by its field, as files do) and on
+  // stderr (naming the flag), with the fit's poor goodness of fit.
   const auto d = run_admitgen("fit '" + minus.data + "' --no-plausibility-errors" + kQuickFit + " --out '" + minus.out + "'");
   INFO(d.output);
   CHECK(d.exit_code == 0);
   const auto fit = nlohmann::json::parse(read_text(minus.out + "/fit.json"));
   const std::string warnings = fit["warnings"].dump();
-  CHECK(warnings.find("give --time-convention -jwt") != std::string::npos);
+  CHECK(warnings.find("give time_convention=-jwt") != std::string::npos);
+  CHECK(warnings.find("--") == std::string::npos);
   CHECK(warnings.find("fits poorly") != std::string::npos);
   CHECK(d.output.find("warning: " + minus.data + ": Im y < 0") != std::string::npos);
+  CHECK(d.output.find("give --time-convention -jwt") != std::string::npos);
+  CHECK(d.output.find("check how the data were read (--quantity, --rho-c, --time-convention)") != std::string::npos);
 }
 
 TEST_CASE("fit cli: an input error found after the output directory was made leaves no directory") {
