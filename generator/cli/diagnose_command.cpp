@@ -73,13 +73,23 @@ void print_summary(const Diagnosis& d, const std::string& path) {
   for (const auto& e : d.identification.effects) {
     std::string params;
     for (const auto& p : e.parameters) params += fmt::format(" {}={:.4g}±{:.2g}", p.name, p.mean, p.std);
-    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}{}\n", e.name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
+    const std::string name = e.name == "material" && !e.priors.empty() ? "material " + e.priors.front().name : e.name;
+    fmt::print("{:<22} {:>9.1f} {:>9.4f} {:>8.2f} {}{}\n", name, e.bayes_factor_deciban, e.gap_after.total, e.shrink,
                params, e.stopped_early ? "  (stopped early: far below the leader)" : "");
   }
   const Verdict& v = d.verdict;
-  fmt::print("verdict: {} (BF {:.1f} dB, shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}\nwrote {}\n",
-             v.effect, v.bayes_factor_deciban, v.shrink, 100.0 * v.explained, v.band.f_center,
-             v.effect == "none" ? "" : (v.white_after ? ", residual white after" : ", structure left"), path);
+  std::string explanation;
+  for (const auto& m : v.explanation) {
+    std::string params;
+    for (const auto& [name, value] : m.parameters) params += fmt::format("{}{}={:.4g}", params.empty() ? "" : ", ", name, value);
+    explanation += fmt::format("\n  {} {} ({}BF {:.1f} dB, shrink x{:.2f})", explanation.empty() ? "" : "+", m.effect,
+                               params.empty() ? "" : params + "; ", m.bayes_factor_deciban, m.shrink_added);
+  }
+  fmt::print("verdict: {} (shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}{}\nwrote {}\n", v.effect,
+             v.shrink, 100.0 * v.explained, v.band.f_center,
+             v.effect == "none" ? "" : (v.white_after ? ", residual white after" : ", structure left"),
+             explanation.empty() ? "" : (v.effect == "unexplained" ? "; best attempt:" : "; explanation:") + explanation,
+             path);
 }
 
 }  // namespace
@@ -92,7 +102,8 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       "  admitgen diagnose --real measured.csv --sim 'miki(sigma=10000, d=50mm)' --tube-diameter 0.1 \\\n"
       "      --mic-spacing 0.05 --mic-distance 0.1 --out diag\n"
       "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
-      "Decision: the effect with the largest Bayes factor against no effect if it reaches 20 dB, else none.");
+      "Decision: none unless an effect reaches 20 dB against no effect; then effects are added while each gains\n"
+      "20 dB (fitted jointly); unexplained if the residual of that explanation is still structured.");
   sub->add_option("--real,-r", cmd->real, "Measured admittance (CSV, read with the data options)")->required();
   auto* sim = sub->add_option("--sim,-s", cmd->sim,
                               "Simulated admittance: a CSV (read with the data options, each overridden by its "

@@ -2,9 +2,10 @@
 /// @file
 /// `admitgen diagnose` as a library: where the sim-to-real gap lies (gap_metrics), which pipeline
 /// stage adds it (stage_attribution, with a fit), which unmodelled effect causes it
-/// (effect_identification) and the verdict (verdict.hpp). The procedure follows docs/physics.md §5.0:
-/// gap and its whiteness → evidence of each effect added to the simulated side → the decisively
-/// supported one and how far the gap shrinks with it.
+/// (effect_identification), which effects together (explanation.hpp) and the verdict (verdict.hpp). The
+/// procedure follows docs/physics.md §5.0: gap and its whiteness → evidence of each effect added to the
+/// simulated side → the decisively supported one, effects added to it while each is decisive → how far
+/// the gap shrinks and whether the residual is white.
 #pragma once
 
 #include "data/measurement.hpp"
@@ -36,6 +37,7 @@ struct Diagnosis {
   std::vector<StageGap> stages;
   std::vector<EffectCandidate> candidates;  ///< what was tried (priors for the report)
   Identification identification;
+  Explanation explanation;
   Verdict verdict;
   IdentificationSettings settings;
   std::vector<std::string> warnings;

@@ -78,6 +78,7 @@ EffectRecord effect_record(const EffectResult& e, const Gap& before) {
 VerdictRecord verdict_record(const Verdict& v) {
   VerdictRecord r;
   r.effect = v.effect;
+  for (const auto& m : v.explanation) r.explanation.push_back({m.effect, m.parameters, m.bayes_factor_deciban, m.shrink_added});
   r.shrink = v.shrink;
   r.explained_fraction = v.explained;
   r.band = edges(v.band);
@@ -97,11 +98,11 @@ DiagnosisSettingsRecord settings_record(const Diagnosis& d) {
   r.likelihood = "marginal-gaussian (noise std marginalised, Jeffreys prior), K = 2N, "
                  "per-point noise shape for heteroscedastic_noise";
   r.decision_rule = describe_decision_rule();
-  for (const auto& c : d.candidates) {
-    std::vector<EffectPriorRecord> priors;
+  for (const auto& c : d.candidates) {  // the material candidates share one entry, a prior per parameter
+    if (r.priors.empty() || r.priors.back().first != c.name) r.priors.emplace_back(c.name, std::vector<EffectPriorRecord>{});
+    auto& priors = r.priors.back().second;
     for (const auto& prior : c.priors) priors.push_back({prior.name, prior.describe(), std::nullopt});
     for (const auto& [name, value] : c.fixed) priors.push_back({name, std::nullopt, value});
-    r.priors.emplace_back(c.name, priors);
   }
   return r;
 }

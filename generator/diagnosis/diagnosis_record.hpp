@@ -17,7 +17,9 @@ namespace admitgen::diagnosis {
 struct Diagnosis;
 
 /// Schema identifier of the diagnosis file.
-inline constexpr const char* kDiagnosisSchema = "admitgen.diagnosis/1";
+inline constexpr const char* kDiagnosisSchema = "admitgen.diagnosis/2";
+/// The schema before combined explanations; still read (io/diagnosis_file.hpp).
+inline constexpr const char* kDiagnosisSchemaV1 = "admitgen.diagnosis/1";
 
 struct BandEdges {
   double f_lo = 0.0, f_hi = 0.0, f_center = 0.0;
@@ -77,9 +79,18 @@ struct EffectRecord {
   std::optional<bool> stopped_early;
 };
 
+/// One member of the verdict's explanation.
+struct ExplanationMemberRecord {
+  std::string effect;
+  std::vector<std::pair<std::string, double>> parameters;  ///< material: exactly its one ratio
+  double log_bayes_factor_deciban = 0.0;                   ///< against the explanation without it
+  double shrink_added = 1.0;
+};
+
 struct VerdictRecord {
-  std::string effect = "none";
-  double shrink = 1.0, explained_fraction = 0.0;
+  std::string effect = "none";  ///< the primary effect, none or unexplained
+  std::vector<ExplanationMemberRecord> explanation;
+  double shrink = 1.0, explained_fraction = 0.0;  ///< of the whole explanation
   BandEdges band;
   double log_bayes_factor_deciban = 0.0;
   std::optional<double> margin_deciban;  ///< none: no runner-up

@@ -1,25 +1,27 @@
 // SPDX-License-Identifier: MIT
 #include "diagnosis/effect_candidates.hpp"
 
+#include "core/errors.hpp"
 #include "physics/effects.hpp"
+#include "physics/material_spec.hpp"
 #include "physics/noise.hpp"
 #include "physics/two_microphone.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
 
 namespace admitgen::diagnosis {
-namespace {
 
 constexpr double kMm = 1e-3;
 
 using Shape = ParameterPrior::Shape;
 
 /// Everything an effect model reads, shared by the candidates (held by shared_ptr in their closures).
-struct Context {
+struct EffectContext {
   Eigen::ArrayXd f;
   Eigen::ArrayXcd y_sim;
   Air air;
@@ -28,21 +30,65 @@ struct Context {
   std::optional<TwoMicrophoneChain> chain;  ///< y_sim through the tube (full geometry only)
   SlitModel slit;                           ///< the edge gap's slit on this grid
 };
-using ContextPtr = std::shared_ptr<const Context>;
+
+namespace {
+
+using ContextPtr = std::shared_ptr<const EffectContext>;
 
 EffectPrediction plain(Eigen::ArrayXcd y) { return {std::move(y), {}}; }
+
+/// The simulated side after the simulated-stage changes (a SPEC re-evaluated, or a table at f·ratio).
+Eigen::ArrayXcd simulated(const EffectContext& c, const SimulatedChange& change) {
+  if (change.layers) return surface_admittance(Material{*change.layers}, c.air, c.f * change.frequency_ratio);
+  return c.sim.admittance(c.f * change.frequency_ratio);
+}
+
+SimulatedChange no_change(const EffectContext& c) {
+  SimulatedChange out;
+  if (c.sim.material() && std::holds_alternative<LayeredAbsorber>(*c.sim.material()))
+    out.layers = std::get<LayeredAbsorber>(*c.sim.material());
+  return out;
+}
+
+EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
+                                 std::function<void(SimulatedChange&, const double*)> change) {
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c};
+  e.predict = [c, change](const double* t) {
+    SimulatedChange s = no_change(*c);
+    change(s, t);
+    return plain(simulated(*c, s));
+  };
+  return e;
+}
+
+EffectCandidate sample_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
+                              std::function<Eigen::ArrayXcd(const Eigen::ArrayXcd&, const double*)> apply) {
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c};
+  e.predict = [c, apply](const double* t) { return plain(apply(c->y_sim, t)); };
+  return e;
+}
 
 /// A chain effect: the true chain deviates from the processed one (two_microphone.hpp).
 EffectCandidate chain_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
                              std::function<ChainDeviation(const double*)> deviation) {
-  return {std::move(name), std::move(priors), {},
-          [c, deviation](const double* t) { return plain(c->chain->measure(deviation(t))); }};
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::chain, {}, {},
+                    [deviation](ChainDeviation& d, const double* t) {
+                      const ChainDeviation own = deviation(t);
+                      d.spacing_error_m += own.spacing_error_m;
+                      d.temperature_offset_k += own.temperature_offset_k;
+                      d.tube_losses = d.tube_losses || own.tube_losses;
+                      d.mic_ratio *= own.mic_ratio;
+                      d.reference_plane_m += own.reference_plane_m;
+                    },
+                    {}, c};
+  e.predict = [c, deviation](const double* t) { return plain(c->chain->measure(deviation(t))); };
+  return e;
 }
 
 bool full_geometry(const TubeSetup& t) { return t.diameter_m && t.spacing_m && t.mic1_distance_m; }
 
 /// Whether the two-microphone inversion is regular at every frequency (sin ks ≠ 0).
-bool regular_transfer(const Context& c) {
+bool regular_transfer(const EffectContext& c) {
   const Eigen::ArrayXd sin_ks = (2.0 * EIGEN_PI * c.f * *c.tube.spacing_m / c.air.c0).sin().abs();
   return (sin_ks > 1e-6).all();
 }
@@ -72,51 +118,75 @@ void add_chain_effects(std::vector<EffectCandidate>& out, const ContextPtr& c) {
   }));
 }
 
+/// reference_plane: alone by its closed form R e^{−2jkδ} (no geometry needed); in a composition one
+/// deviation of the chain, which reproduces the closed form exactly (two_microphone.hpp).
+EffectCandidate reference_plane(const ContextPtr& c) {
+  EffectCandidate e = chain_effect("reference_plane", {{"delta_m", Shape::uniform, -10 * kMm, 10 * kMm}}, c,
+                                   [](const double* t) {
+                                     ChainDeviation d;
+                                     d.reference_plane_m = t[0];
+                                     return d;
+                                   });
+  e.predict = [c](const double* t) { return plain(apply_reference_plane(ReferencePlane{t[0]}, c->air, c->f, c->y_sim)); };
+  return e;
+}
+
 EffectCandidate heteroscedastic_noise(const ContextPtr& c) {
-  return {"heteroscedastic_noise", {{"scale", Shape::uniform, 0.0, 0.5}}, {}, [c](const double* t) {
-            return EffectPrediction{c->y_sim, heteroscedastic_std(1.0, t[0], c->air, *c->tube.spacing_m, c->f)};
-          }};
+  const auto shape = [c](const double* t) { return heteroscedastic_std(1.0, t[0], c->air, *c->tube.spacing_m, c->f); };
+  return {"heteroscedastic_noise",
+          {{"scale", Shape::uniform, 0.0, 0.5}},
+          {},
+          [c, shape](const double* t) { return EffectPrediction{c->y_sim, shape(t)}; },
+          EffectStage::noise,
+          {},
+          {},
+          {},
+          shape,
+          c};
 }
 
 EffectCandidate edge_gap(const ContextPtr& c) {
-  return {"edge_gap",
-          {{"width_m", Shape::log_uniform, 0.05 * kMm, 3 * kMm}, {"depth_m", Shape::log_uniform, 5 * kMm, 200 * kMm}},
-          {},
-          [c](const double* t) {
-            return plain(c->slit.edge_gap(EdgeGap{t[0], t[1]}, *c->tube.diameter_m, c->y_sim));
-          }};
+  return sample_effect(
+      "edge_gap",
+      {{"width_m", Shape::log_uniform, 0.05 * kMm, 3 * kMm}, {"depth_m", Shape::log_uniform, 5 * kMm, 200 * kMm}}, c,
+      [c](const Eigen::ArrayXcd& y, const double* t) { return c->slit.edge_gap(EdgeGap{t[0], t[1]}, *c->tube.diameter_m, y); });
 }
 
 EffectCandidate frame_resonance(const ContextPtr& c) {
   const double f_min = c->f[0], f_max = c->f[c->f.size() - 1];
-  return {"frame_resonance",
-          {{"f0_hz", Shape::log_uniform, f_min, f_max}, {"q", Shape::log_uniform, 1, 100},
-           {"y_peak", Shape::log_uniform, 1e-3, 3}},
-          {},
-          [c](const double* t) { return plain(apply_frame_resonance(FrameResonance{t[0], t[1], t[2]}, c->f, c->y_sim)); }};
+  return sample_effect("frame_resonance",
+                       {{"f0_hz", Shape::log_uniform, f_min, f_max}, {"q", Shape::log_uniform, 1, 100},
+                        {"y_peak", Shape::log_uniform, 1e-3, 3}},
+                       c, [c](const Eigen::ArrayXcd& y, const double* t) {
+                         return apply_frame_resonance(FrameResonance{t[0], t[1], t[2]}, c->f, y);
+                       });
 }
 
 EffectCandidate fractional_order(const ContextPtr& c) {
   const double f_ref = std::sqrt(c->f[0] * c->f[c->f.size() - 1]);
-  return {"fractional_order",
-          {{"c_plus", Shape::uniform, 0.0, 0.5}, {"c_minus", Shape::uniform, 0.0, 0.5}},
-          {{"f_ref_hz", f_ref}},
-          [c, f_ref](const double* t) {
-            return plain(apply_fractional_order(FractionalOrder{t[0], t[1], f_ref}, c->f, c->y_sim));
-          }};
+  EffectCandidate e = sample_effect("fractional_order",
+                                    {{"c_plus", Shape::uniform, 0.0, 0.5}, {"c_minus", Shape::uniform, 0.0, 0.5}}, c,
+                                    [c, f_ref](const Eigen::ArrayXcd& y, const double* t) {
+                                      return apply_fractional_order(FractionalOrder{t[0], t[1], f_ref}, c->f, y);
+                                    });
+  e.fixed = {{"f_ref_hz", f_ref}};
+  return e;
 }
 
 EffectCandidate air_gap(const ContextPtr& c) {
-  return {"air_gap", {{"gap_m", Shape::log_uniform, 0.1 * kMm, 30 * kMm}}, {}, [c](const double* t) {
-            auto layered = std::get<LayeredAbsorber>(*c->sim.material());
-            layered.layers.push_back(AirLayer{t[0]});
-            return plain(surface_admittance(Material{layered}, c->air, c->f));
-          }};
+  return simulated_effect("air_gap", {{"gap_m", Shape::log_uniform, 0.1 * kMm, 30 * kMm}}, c,
+                          [](SimulatedChange& s, const double* t) { s.layers->layers.push_back(AirLayer{t[0]}); });
+}
+
+/// One catalogue parameter of the SPEC, times a free ratio.
+EffectCandidate material(const ContextPtr& c, const SpecParameter& p) {
+  return simulated_effect("material", {{p.name, Shape::log_uniform, p.ratio_lo, p.ratio_hi}}, c,
+                          [in = p.in](SimulatedChange& s, const double* t) { in(*s.layers) *= t[0]; });
 }
 
 /// The prior of ratio is log-uniform on [0.8, 1.25], narrowed to where the simulated side is known
 /// (a table covers only its own band); std::nullopt when that leaves less than ±2 % around 1.
-std::optional<ParameterPrior> frequency_scale_prior(const Context& c) {
+std::optional<ParameterPrior> frequency_scale_prior(const EffectContext& c) {
   const double f_min = c.f[0], f_max = c.f[c.f.size() - 1];
   double lo = 0.8, hi = 1.25;
   while (lo < 0.98 && !c.sim.covers(f_min * lo)) lo += 0.005;
@@ -126,7 +196,44 @@ std::optional<ParameterPrior> frequency_scale_prior(const Context& c) {
 }
 
 EffectCandidate frequency_scale(const ContextPtr& c, const ParameterPrior& prior) {
-  return {"frequency_scale", {prior}, {}, [c](const double* t) { return plain(c->sim.admittance(c->f * t[0])); }};
+  EffectCandidate e = simulated_effect("frequency_scale", {prior}, c,
+                                       [](SimulatedChange& s, const double* t) { s.frequency_ratio *= t[0]; });
+  e.predict = [c](const double* t) { return plain(c->sim.admittance(c->f * t[0])); };
+  return e;
+}
+
+/// The composition of combine_effects; `members` sorted by stage, then candidate order, so the simulated
+/// side is changed first, then the sample effects act on it, then the chain measures it.
+EffectPrediction compose(const EffectContext& c, const std::vector<EffectCandidate>& members,
+                         const std::vector<std::size_t>& offset, const double* theta) {
+  SimulatedChange change = no_change(c);
+  bool changed = false, chain = false;
+  ChainDeviation deviation;
+  EffectPrediction out;
+  out.y = c.y_sim;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const EffectCandidate& m = members[k];
+    const double* t = theta + offset[k];
+    if (m.stage != EffectStage::simulated && k > 0 && members[k - 1].stage == EffectStage::simulated)
+      out.y = simulated(c, change);
+    switch (m.stage) {
+      case EffectStage::simulated: m.change(change, t); break;
+      case EffectStage::sample: out.y = m.apply(out.y, t); break;
+      case EffectStage::chain:
+        m.deviate(deviation, t);
+        chain = true;
+        break;
+      case EffectStage::noise: out.noise_shape = m.noise_shape(t); break;
+    }
+    changed = changed || m.stage == EffectStage::simulated || m.stage == EffectStage::sample;
+  }
+  if (members.back().stage == EffectStage::simulated) out.y = simulated(c, change);
+  if (chain && c.chain)
+    out.y = changed ? measure_through_chain(out.y, c.f, c.air, c.tube.geometry("the chain effects"), deviation)
+                    : c.chain->measure(deviation);
+  else if (chain)
+    out.y = apply_reference_plane(ReferencePlane{deviation.reference_plane_m}, c.air, c.f, out.y);
+  return out;
 }
 
 }  // namespace
@@ -139,23 +246,62 @@ std::string ParameterPrior::describe() const {
   return fmt::format("{} [{:g}, {:g}]", shape == Shape::uniform ? "uniform" : "log-uniform", lo, hi);
 }
 
+std::string EffectCandidate::label() const {
+  return name == "material" && !priors.empty() ? name + " " + priors.front().name : name;
+}
+
 std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_sim,
                                                const SimulatedSide& sim, const TubeSetup& tube) {
   const Air air = Air::at_celsius(tube.temperature_c);
   std::optional<TwoMicrophoneChain> chain;
   if (full_geometry(tube)) chain.emplace(y_sim, f_hz, air, tube.geometry("the chain effects"));
-  const auto c = std::make_shared<const Context>(Context{f_hz, y_sim, air, tube, sim, std::move(chain), SlitModel(air, f_hz)});
+  const auto c =
+      std::make_shared<const EffectContext>(EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), SlitModel(air, f_hz)});
+  const LayeredAbsorber* layered =
+      sim.material() ? std::get_if<LayeredAbsorber>(&*sim.material()) : nullptr;
   std::vector<EffectCandidate> out;
-  out.push_back({"reference_plane", {{"delta_m", Shape::uniform, -10 * kMm, 10 * kMm}}, {}, [c](const double* t) {
-                   return plain(apply_reference_plane(ReferencePlane{t[0]}, c->air, c->f, c->y_sim));
-                 }});
+  out.push_back(reference_plane(c));
   if (full_geometry(tube)) add_chain_effects(out, c);
   if (tube.diameter_m) out.push_back(edge_gap(c));
   out.push_back(frame_resonance(c));
   out.push_back(fractional_order(c));
-  if (sim.material() && std::holds_alternative<LayeredAbsorber>(*sim.material())) out.push_back(air_gap(c));
+  if (layered && !(!layered->layers.empty() && std::holds_alternative<AirLayer>(layered->layers.back())))
+    out.push_back(air_gap(c));
   if (full_geometry(tube) && regular_transfer(*c)) out.push_back(heteroscedastic_noise(c));
   if (const auto prior = frequency_scale_prior(*c)) out.push_back(frequency_scale(c, *prior));
+  if (layered)
+    for (const auto& p : spec_parameters(*layered)) out.push_back(material(c, p));
+  return out;
+}
+
+EffectCandidate combine_effects(const std::vector<const EffectCandidate*>& members) {
+  ADMITGEN_ENSURE(!members.empty(), "a combination needs at least one effect");
+  if (members.size() == 1) return *members.front();
+  std::vector<EffectCandidate> sorted;
+  std::vector<std::size_t> offset, order(members.size());
+  std::vector<std::size_t> start(members.size(), 0);
+  for (std::size_t k = 1; k < members.size(); ++k) start[k] = start[k - 1] + members[k - 1]->priors.size();
+  for (std::size_t k = 0; k < members.size(); ++k) order[k] = k;
+  // By stage, then by place in the candidates' vector (the table's order; all members point into it).
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (members[a]->stage != members[b]->stage)
+      return static_cast<int>(members[a]->stage) < static_cast<int>(members[b]->stage);
+    return std::less<const EffectCandidate*>()(members[a], members[b]);
+  });
+  EffectCandidate out;
+  out.context = members.front()->context;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    ADMITGEN_ENSURE(members[k]->context == out.context, "combined effects come from different diagnoses");
+    out.name += (k ? "+" : "") + members[k]->label();
+    out.priors.insert(out.priors.end(), members[k]->priors.begin(), members[k]->priors.end());
+    out.fixed.insert(out.fixed.end(), members[k]->fixed.begin(), members[k]->fixed.end());
+  }
+  for (std::size_t k : order) {
+    sorted.push_back(*members[k]);
+    offset.push_back(start[k]);
+  }
+  out.stage = sorted.front().stage;
+  out.predict = [c = out.context, sorted, offset](const double* t) { return compose(*c, sorted, offset, t); };
   return out;
 }
 

@@ -20,6 +20,10 @@
 /// | air_gap | gap_m | log [0.1, 30] mm | the simulated side is a layered material SPEC |
 /// | heteroscedastic_noise | scale | uniform [0, 0.5] | tube geometry given, no sin ks = 0 in band |
 /// | frequency_scale (own) | ratio | log [0.8, 1.25], narrowed to where a table is known | ≥ ±2 % of it covered |
+/// | material (own) | "<layer>.<key>" ratio | log [0.5, 2], kept physical (material_spec.hpp SpecParameter) | --sim is a layered SPEC; one candidate per numeric parameter |
+///
+/// air_gap is not offered when the SPEC's deepest layer is already air: a gap behind an air cavity is
+/// that cavity made deeper, which is the material candidate of its "d" (the two would be one model).
 ///
 /// frequency_scale, y' (f) = y_sim(f · ratio), is admitgen's own addition: a material whose thickness,
 /// stiffness or flow resistivity differs from the simulated one shifts its λ/4 resonances (docs/physics.md
@@ -32,6 +36,8 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,11 +63,35 @@ struct EffectPrediction {
   Eigen::ArrayXd noise_shape;
 };
 
+/// Where an effect acts, in the order effects compose (docs/diagnosis.md, "Combined explanations"; the
+/// order of physics/synthetic_measurement.hpp): the simulated side itself (its catalogue parameters, an
+/// air gap behind its layers, the frequency it is evaluated at), the sample's surface, the measurement
+/// chain, the noise.
+enum class EffectStage { simulated, sample, chain, noise };
+
+/// What the simulated-stage effects change: the layers of a SPEC, the frequency y_sim is evaluated at.
+struct SimulatedChange {
+  std::optional<LayeredAbsorber> layers;  ///< set when the simulated side is a layered SPEC
+  double frequency_ratio = 1.0;
+};
+
+struct EffectContext;  ///< what the candidates of one diagnosis share (effect_candidates.cpp)
+
 struct EffectCandidate {
-  std::string name;
+  std::string name;  ///< the documented effect name ("material" for every catalogue parameter)
   std::vector<ParameterPrior> priors;
   std::vector<std::pair<std::string, double>> fixed;  ///< parameters held fixed, e.g. f_ref_hz
   std::function<EffectPrediction(const double* theta)> predict;
+  EffectStage stage = EffectStage::sample;
+  /// The effect as one step of a composition; the one matching `stage` is set.
+  std::function<void(SimulatedChange&, const double* theta)> change;
+  std::function<Eigen::ArrayXcd(const Eigen::ArrayXcd& y, const double* theta)> apply;
+  std::function<void(ChainDeviation&, const double* theta)> deviate;
+  std::function<Eigen::ArrayXd(const double* theta)> noise_shape;
+  std::shared_ptr<const EffectContext> context;
+
+  /// The name, and for material the parameter ("material 1.sigma"): unique among the candidates.
+  std::string label() const;
 };
 
 /// Every effect that applies to this simulated side, frequencies and tube (table above), in the
@@ -69,5 +99,11 @@ struct EffectCandidate {
 /// share it and the tube chain's fixed quantities (physics/two_microphone.hpp TwoMicrophoneChain).
 std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_sim,
                                                const SimulatedSide& sim, const TubeSetup& tube);
+
+/// The members acting together, as one candidate (all from one effect_candidates() call, each effect at
+/// most once): priors concatenated in the members' order; the prediction composes them by stage
+/// (EffectStage), within a stage in the order of the candidates vector the members point into (the
+/// table's), every chain deviation in one true chain.
+EffectCandidate combine_effects(const std::vector<const EffectCandidate*>& members);
 
 }  // namespace admitgen::diagnosis

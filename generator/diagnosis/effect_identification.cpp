@@ -36,7 +36,7 @@ class CandidateProgress {
   void running(const EffectCandidate& c, const NestedStatus& s) {
     if (!out_.enabled()) return;
     std::lock_guard<std::mutex> lock(mutex_);
-    auto& [weight, first, fraction] = active_[c.name];
+    auto& [weight, first, fraction] = active_[c.label()];
     if (weight == 0.0) weight = cost(c), first = s.remaining;
     fraction = first > dlogz_ ? std::clamp(std::log(first / s.remaining) / std::log(first / dlogz_), 0.0, 0.99) : 0.0;
     show();
@@ -44,7 +44,7 @@ class CandidateProgress {
   void done(const EffectCandidate& c) {
     if (!out_.enabled()) return;
     std::lock_guard<std::mutex> lock(mutex_);
-    active_.erase(c.name);
+    active_.erase(c.label());
     finished_ += cost(c);
     ++count_;
     show();
@@ -244,21 +244,26 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
   return results;
 }
 
+void fill_gap(EffectResult& r, const EffectCandidate& candidate, const Eigen::ArrayXd& f_hz,
+              const Eigen::ArrayXcd& y_real, const Gap& gap_before) {
+  r.gap_after = measure_gap(f_hz, y_real, candidate.predict(r.best.empty() ? nullptr : r.best.data()).y,
+                            rms_level(y_real));
+  r.shrink = gap_before.total / r.gap_after.total;
+  r.explained = 1.0 - 1.0 / (r.shrink * r.shrink);
+  r.band = most_improved_band(gap_before.bands, r.gap_after.bands);
+}
+
 Identification identify_effects(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real,
                                 const Eigen::ArrayXcd& y_sim, const Gap& gap_before,
                                 const std::vector<EffectCandidate>& candidates, const IdentificationSettings& settings,
                                 Progress& progress) {
   const EffectLikelihood likelihood(y_real);
-  const double level = rms_level(y_real);
   Identification out;
   out.log_z_none = likelihood(EffectPrediction{y_sim, {}});
   out.effects = evaluate_candidates(candidates, likelihood, settings, out.log_z_none, 0, progress);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    EffectResult& r = out.effects[i];
-    r.gap_after = measure_gap(f_hz, y_real, candidates[i].predict(r.best.empty() ? nullptr : r.best.data()).y, level);
-    r.shrink = gap_before.total / r.gap_after.total;
-    r.explained = 1.0 - 1.0 / (r.shrink * r.shrink);
-    r.band = most_improved_band(gap_before.bands, r.gap_after.bands);
+    out.effects[i].candidate = i;
+    fill_gap(out.effects[i], candidates[i], f_hz, y_real, gap_before);
   }
   std::stable_sort(out.effects.begin(), out.effects.end(),
                    [](const EffectResult& a, const EffectResult& b) { return a.log_z > b.log_z; });

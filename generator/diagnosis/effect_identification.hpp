@@ -41,6 +41,10 @@ class Progress;  // core/progress.hpp
 
 namespace admitgen::diagnosis {
 
+/// Odds of at least 100 : 1 ("decisive" on Jeffreys' scale): what an effect must gain to be named
+/// (verdict.hpp) and to join an explanation (explanation.hpp).
+inline constexpr double kDecisiveDeciban = 20.0;
+
 /// A sampled candidate whose bound stays this far below the leader's evidence stops early (5× the
 /// decision threshold of verdict.hpp: such a candidate can neither win nor be the runner-up that
 /// decides the margin).
@@ -65,6 +69,7 @@ struct IdentificationSettings {
 
 struct EffectResult {
   std::string name;
+  std::size_t candidate = 0;  ///< index into the candidates it was evaluated from
   std::vector<ParameterPrior> priors;
   std::vector<ParameterSummary> parameters;           ///< one per prior, in its order
   std::vector<std::pair<std::string, double>> fixed;  ///< parameters held fixed
@@ -112,6 +117,10 @@ std::string describe_evidence_methods(const IdentificationSettings& settings);
 std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>& candidates,
                                               const EffectLikelihood& likelihood, const IdentificationSettings& settings,
                                               double log_z_floor, std::uint64_t first_stream, Progress& progress);
+
+/// Fills r's gap fields (gap_after at the max-likelihood ϑ, shrink, explained, band) for `candidate`.
+void fill_gap(EffectResult& r, const EffectCandidate& candidate, const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real,
+              const Gap& gap_before);
 
 /// Runs every candidate against y_real (at f_hz, level ‖y_real‖) and ranks them; y_sim is the
 /// no-effect model.

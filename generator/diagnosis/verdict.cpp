@@ -7,7 +7,8 @@
 
 namespace admitgen::diagnosis {
 
-Verdict decide(const Gap& gap, const Identification& id) {
+Verdict decide(const Gap& gap, const Identification& id, const Explanation& explanation,
+               const std::vector<EffectCandidate>& candidates) {
   Verdict v;
   v.band = gap.bands[gap.worst].band;
   v.white_after = gap.whiteness.white;
@@ -16,20 +17,32 @@ Verdict decide(const Gap& gap, const Identification& id) {
   v.bayes_factor_deciban = best.bayes_factor_deciban;
   v.margin_deciban = id.effects.size() > 1 ? best.bayes_factor_deciban - id.effects[1].bayes_factor_deciban
                                            : std::numeric_limits<double>::infinity();
-  if (best.bayes_factor_deciban < kDecisiveDeciban) return v;
-  v.effect = best.name;
-  v.shrink = best.shrink;
-  v.explained = best.explained;
-  v.band = gap.bands[best.band].band;
-  v.white_after = best.gap_after.whiteness.white;
+  if (best.bayes_factor_deciban < kDecisiveDeciban || explanation.steps.empty()) return v;
+  for (std::size_t k = 0; k < explanation.steps.size(); ++k) {
+    const ExplanationStep& step = explanation.steps[k];
+    const EffectCandidate& c = candidates[step.candidate];
+    VerdictMember m{c.name, {}, step.bayes_factor_deciban, step.shrink_added};
+    for (const auto& p : explanation.member_parameters(k, candidates)) m.parameters.emplace_back(p.name, p.mean);
+    m.parameters.insert(m.parameters.end(), c.fixed.begin(), c.fixed.end());
+    v.explanation.push_back(m);
+  }
+  const EffectResult& joint = explanation.joint;
+  v.shrink = joint.shrink;
+  v.explained = joint.explained;
+  v.band = gap.bands[joint.band].band;
+  v.white_after = joint.gap_after.whiteness.white;
+  v.effect = v.white_after ? v.explanation.front().effect : "unexplained";
   return v;
 }
 
 std::string describe_decision_rule() {
   return fmt::format(
-      "the effect with the largest Bayes factor against no effect, if that factor is at least {:g} deciban "
-      "(odds 100:1); otherwise none",
-      kDecisiveDeciban);
+      "none unless the effect with the largest Bayes factor against no effect reaches {0:g} deciban (odds 100:1); "
+      "then the explanation grown from it by greedy forward selection (each added effect fitted jointly and at least "
+      "{0:g} deciban better than the explanation without it; stop when none is, when the residual is white, or at "
+      "{1} effects); unexplained when that explanation leaves the residual structured (lag-1 |z| >= 3), else the "
+      "first effect of the explanation",
+      kDecisiveDeciban, kMaxExplanationEffects);
 }
 
 }  // namespace admitgen::diagnosis

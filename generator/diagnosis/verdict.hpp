@@ -3,8 +3,17 @@
 /// The decision rule of `diagnose`, stated once:
 ///
 ///   Let e* be the effect with the largest Bayes factor BF against no effect (effect_identification).
-///   The verdict is e* if BF(e*) ≥ 20 deciban (odds ≥ 100 : 1, "decisive" on Jeffreys' scale);
-///   otherwise it is `none`.
+///   If BF(e*) < 20 deciban (odds 100 : 1, "decisive" on Jeffreys' scale) the verdict is `none`.
+///   Otherwise the explanation E grown from e* (explanation.hpp) is the verdict's explanation, and
+///   the verdict is `unexplained` when E leaves the residual structured (the lag-1 test of
+///   residual_whiteness.hpp fails, |z| ≥ 3); else it is e* (the primary effect, E's first member).
+///
+/// Why whiteness and not a threshold on the explained fraction: in the validation suite
+/// (docs/diagnosis.md, "Validation") three vocabulary effects fitted jointly explain more than 99 % of
+/// the squared gap of an out-of-vocabulary case, because a large structured gap is easy to reduce by
+/// flexible effects, yet they leave structure (z ≫ 3); the in-vocabulary cases named correctly end
+/// white. For `unexplained` the explanation lists the best attempt, and shrink and explained_fraction
+/// say how much of the gap it accounts for.
 ///
 /// The band of the verdict is the band e* explains most (largest drop of g_b²); for `none` it is the
 /// worst band of the gap. shrink = gap before / gap after over the whole data (1 for `none`).
@@ -17,26 +26,37 @@
 #pragma once
 
 #include "diagnosis/effect_identification.hpp"
+#include "diagnosis/explanation.hpp"
 #include "diagnosis/gap_metrics.hpp"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace admitgen::diagnosis {
 
-inline constexpr double kDecisiveDeciban = 20.0;
+/// One member of the verdict's explanation.
+struct VerdictMember {
+  std::string effect;                                      ///< documented name ("material" for a catalogue parameter)
+  std::vector<std::pair<std::string, double>> parameters;  ///< posterior means of the joint fit, then fixed values
+  double bayes_factor_deciban = 0.0;                       ///< against the explanation without it
+  double shrink_added = 1.0;                               ///< gap without it / gap with it
+};
 
 struct Verdict {
-  std::string effect = "none";
+  std::string effect = "none";  ///< e*, none or unexplained
+  std::vector<VerdictMember> explanation;
   double bayes_factor_deciban = 0.0;  ///< of e* (also when the verdict is none)
   double margin_deciban = 0.0;        ///< BF(e*) − BF(runner-up); +inf when there is no runner-up
-  double shrink = 1.0;
-  double explained = 0.0;  ///< 1 − 1/shrink²: < 0.5 means the effect is real but most of the gap is not it
+  double shrink = 1.0;      ///< of the whole explanation
+  double explained = 0.0;  ///< 1 − 1/shrink²: < 0.5 means the effects are real but most of the gap is not them
   ThirdOctaveBand band;
   bool white_after = false;  ///< is the residual after the verdict white (residual_whiteness)?
 };
 
 /// Applies the rule above.
-Verdict decide(const Gap& gap, const Identification& identification);
+Verdict decide(const Gap& gap, const Identification& identification, const Explanation& explanation,
+               const std::vector<EffectCandidate>& candidates);
 
 /// The rule in words, written to diagnosis.json.
 std::string describe_decision_rule();

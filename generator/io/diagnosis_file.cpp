@@ -88,7 +88,14 @@ Json effect_json(const EffectRecord& e) {
 }
 
 Json verdict_json(const VerdictRecord& v) {
+  Json explanation = Json::array();
+  for (const auto& m : v.explanation)
+    explanation.push_back(Json{{"effect", m.effect},
+                               {"parameters", numbers_by_name_json(m.parameters)},
+                               {"log_bayes_factor_deciban", m.log_bayes_factor_deciban},
+                               {"shrink_added", m.shrink_added}});
   Json j{{"effect", v.effect},
+         {"explanation", explanation},
          {"shrink", v.shrink},
          {"explained_fraction", v.explained_fraction},
          {"band", edges_json(v.band)},
@@ -225,10 +232,33 @@ EffectRecord read_effect(const Field& f) {
   return e;
 }
 
-VerdictRecord read_verdict(const Field& f) {
+/// A /1 verdict has no explanation: its one effect (with the parameters of its entry in "effects") is it.
+std::vector<ExplanationMemberRecord> explanation_of_v1(const VerdictRecord& v, const std::vector<EffectRecord>& effects) {
+  if (v.effect == "none") return {};
+  ExplanationMemberRecord m{v.effect, {}, v.log_bayes_factor_deciban, v.shrink};
+  for (const auto& e : effects)
+    if (e.effect == v.effect) {
+      m.parameters = e.parameters;
+      break;
+    }
+  return {m};
+}
+
+VerdictRecord read_verdict(const Field& f, bool v1) {
   ObjectReader o(f);
   VerdictRecord v;
   v.effect = o.required("effect").text();
+  if (!v1)
+    for (const auto& m : o.required("explanation").elements()) {
+      ObjectReader r(m);
+      ExplanationMemberRecord member;
+      member.effect = r.required("effect").text();
+      member.parameters = r.required("parameters").numbers_by_name();
+      member.log_bayes_factor_deciban = r.required("log_bayes_factor_deciban").number();
+      member.shrink_added = r.required("shrink_added").number();
+      r.finish();
+      v.explanation.push_back(member);
+    }
   v.shrink = o.required("shrink").number();
   v.explained_fraction = o.required("explained_fraction").number();
   v.band = read_edges(o.required("band"));
@@ -309,7 +339,8 @@ std::string diagnosis_text(const DiagnosisRecord& d) {
 
 DiagnosisRecord parse_diagnosis(const std::string& text, const std::string& file) {
   const Json doc = parse_json(text, file);
-  ObjectReader o(document_root(doc, file, kDiagnosisSchema, "diagnosis"));
+  const bool v1 = doc.is_object() && doc.contains("schema") && doc["schema"] == kDiagnosisSchemaV1;
+  ObjectReader o(document_root(doc, file, v1 ? kDiagnosisSchemaV1 : kDiagnosisSchema, "diagnosis"));
   DiagnosisRecord d;
   d.schema = o.required("schema").text();
   d.version = o.required("version").text();
@@ -319,7 +350,11 @@ DiagnosisRecord parse_diagnosis(const std::string& text, const std::string& file
   for (const auto& s : o.required("stages").elements()) d.stages.push_back(read_stage(s));
   d.log_evidence_none = o.required("log_evidence_none").number();
   for (const auto& e : o.required("effects").elements()) d.effects.push_back(read_effect(e));
-  d.verdict = read_verdict(o.required("verdict"));
+  d.verdict = read_verdict(o.required("verdict"), v1);
+  if (v1) {  // read as the current schema: the verdict's one effect is its explanation
+    d.verdict.explanation = explanation_of_v1(d.verdict, d.effects);
+    d.schema = kDiagnosisSchema;
+  }
   o.finish();
   return d;
 }

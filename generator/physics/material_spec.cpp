@@ -2,11 +2,14 @@
 #include "physics/material_spec.hpp"
 
 #include "core/errors.hpp"
+#include "physics/overloaded.hpp"
 #include "physics/parameter_list.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
+#include <type_traits>
 #include <map>
 #include <string_view>
 
@@ -128,6 +131,82 @@ Material parse_material_spec(const std::string& spec, const FitReader& read_fit)
     absorber.layers.push_back(parse_layer(item, context));
   }
   return absorber;
+}
+
+namespace {
+
+/// The parameter `member` of the layer model M of layer k (a porous model inside a PorousLayer, or a
+/// layer type itself).
+template <class M>
+std::function<double&(LayeredAbsorber&)> model_field(std::size_t k, double M::*member) {
+  return [k, member](LayeredAbsorber& a) -> double& {
+    if constexpr (std::is_same_v<M, MicroPerforatedPanel> || std::is_same_v<M, AirLayer>)
+      return std::get<M>(a.layers[k]).*member;
+    else
+      return std::get<M>(std::get<PorousLayer>(a.layers[k]).model).*member;
+  };
+}
+
+std::function<double&(LayeredAbsorber&)> porous_depth(std::size_t k) {
+  return [k](LayeredAbsorber& a) -> double& { return std::get<PorousLayer>(a.layers[k]).thickness; };
+}
+
+/// Ratio limits: a fraction stays ≤ 1, a tortuosity ≥ 1.
+SpecParameter spec_parameter(std::size_t k, const std::string& key, double value,
+                             std::function<double&(LayeredAbsorber&)> in) {
+  SpecParameter p{fmt::format("{}.{}", k + 1, key), value, 0.5, 2.0, std::move(in)};
+  if (key == "phi" || key == "p") p.ratio_hi = std::min(2.0, 1.0 / value);
+  if (key == "alpha_inf") p.ratio_lo = std::max(0.5, 1.0 / value);
+  return p;
+}
+
+}  // namespace
+
+std::vector<SpecParameter> spec_parameters(const LayeredAbsorber& absorber) {
+  std::vector<SpecParameter> out;
+  for (std::size_t k = 0; k < absorber.layers.size(); ++k) {
+    const auto add = [&](const std::string& key, double value, std::function<double&(LayeredAbsorber&)> in) {
+      out.push_back(spec_parameter(k, key, value, std::move(in)));
+    };
+    std::visit(Overloaded{[&](const PorousLayer& l) {
+                            std::visit(Overloaded{[&](const DelanyBazley& m) {
+                                                    add("sigma", m.flow_resistivity,
+                                                        model_field<DelanyBazley>(k, &DelanyBazley::flow_resistivity));
+                                                  },
+                                                  [&](const Miki& m) {
+                                                    add("sigma", m.flow_resistivity, model_field<Miki>(k, &Miki::flow_resistivity));
+                                                  },
+                                                  [&](const JohnsonChampouxAllard& m) {
+                                                    using J = JohnsonChampouxAllard;
+                                                    add("phi", m.porosity, model_field<J>(k, &J::porosity));
+                                                    add("sigma", m.flow_resistivity, model_field<J>(k, &J::flow_resistivity));
+                                                    add("alpha_inf", m.tortuosity, model_field<J>(k, &J::tortuosity));
+                                                    add("lambda", m.viscous_length, model_field<J>(k, &J::viscous_length));
+                                                    add("lambda_th", m.thermal_length, model_field<J>(k, &J::thermal_length));
+                                                  },
+                                                  [&](const Horoshenkov2019& m) {
+                                                    using H = Horoshenkov2019;
+                                                    add("phi", m.porosity, model_field<H>(k, &H::porosity));
+                                                    add("pore", m.median_pore_size, model_field<H>(k, &H::median_pore_size));
+                                                    add("sigma_s", m.pore_size_deviation,
+                                                        model_field<H>(k, &H::pore_size_deviation));
+                                                  }},
+                                       l.model);
+                            add("d", l.thickness, porous_depth(k));
+                          },
+                          [&](const AirLayer& l) { add("d", l.thickness, model_field<AirLayer>(k, &AirLayer::thickness)); },
+                          [&](const MicroPerforatedPanel& l) {
+                            using P = MicroPerforatedPanel;
+                            add("hole", l.hole_diameter, model_field<P>(k, &P::hole_diameter));
+                            add("t", l.thickness, model_field<P>(k, &P::thickness));
+                            add("p", l.perforation, model_field<P>(k, &P::perforation));
+                          }},
+               absorber.layers[k]);
+  }
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [](const SpecParameter& p) { return !(p.value > 0.0) || p.ratio_lo > 0.98 || p.ratio_hi < 1.02; }),
+            out.end());
+  return out;
 }
 
 }  // namespace admitgen

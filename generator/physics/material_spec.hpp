@@ -34,6 +34,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace admitgen {
 
@@ -44,5 +45,20 @@ using FitReader = std::function<FitRecord(const std::string& path)>;
 /// refused). Throws InputError quoting the SPEC and saying what is wrong: unknown layer, missing, unknown
 /// or out-of-range parameter, bad syntax.
 Material parse_material_spec(const std::string& spec, const FitReader& read_fit = {});
+
+/// One numeric parameter of a layered SPEC, as `diagnose` varies it (a catalogue value that may be off):
+/// named "<layer index from 1>.<SPEC key>" (e.g. "1.sigma", "2.d"), with the range [ratio_lo, ratio_hi]
+/// of factors that keep the layer physical inside [0.5, 2] (porosity and perforation ≤ 1, tortuosity ≥ 1).
+struct SpecParameter {
+  std::string name;
+  double value = 0.0;
+  double ratio_lo = 0.5, ratio_hi = 2.0;
+  /// The parameter inside a copy of the absorber (same layer structure).
+  std::function<double&(LayeredAbsorber&)> in;
+};
+
+/// Every numeric parameter of the layers, in SPEC order (layer by layer, keys in the table's order);
+/// a parameter whose physical range leaves less than ±2 % around 1 is left out (e.g. phi = 1).
+std::vector<SpecParameter> spec_parameters(const LayeredAbsorber& absorber);
 
 }  // namespace admitgen

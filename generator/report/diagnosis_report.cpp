@@ -102,6 +102,33 @@ std::string parameters_text(const diagnosis::EffectRecord& effect) {
   return out.empty() ? "—" : out;
 }
 
+/// "edge_gap (width_m = 0.001, depth_m = 0.05)".
+std::string explanation_member_text(const diagnosis::ExplanationMemberRecord& m) {
+  std::string params;
+  for (const auto& [name, value] : m.parameters) params += fmt::format("{}{} = {}", params.empty() ? "" : ", ", name, number(value));
+  return params.empty() ? m.effect : fmt::format("{} ({})", m.effect, params);
+}
+
+std::string explanation_table(const DiagnosisRecord& d) {
+  Table t{{"step", "effect", "parameters (joint posterior mean)", "Bayes factor against the explanation without it [dB]",
+           "shrink it adds"},
+          {}, {0, 3, 4}, {}, {}};
+  int step = 1;
+  for (const auto& m : d.verdict.explanation) {
+    std::string params;
+    for (const auto& [name, value] : m.parameters)
+      params += fmt::format("{}<code>{}</code> = {}", params.empty() ? "" : "<br/>", escape_xml(name), number(value));
+    t.rows.push_back({std::to_string(step++), "<code>" + escape_xml(m.effect) + "</code>", params.empty() ? "—" : params,
+                      fmt::format("{:.1f}", m.log_bayes_factor_deciban), fmt::format("{:.2f}×", m.shrink_added)});
+  }
+  t.caption = fmt::format(
+      "Effects added one at a time, each fitted jointly with those before it and kept only if decisively (≥ 20 dB) "
+      "better than the explanation without it. Whole explanation: shrink {}×, {} % of the squared gap, residual {}.",
+      fmt::format("{:.2f}", d.verdict.shrink), fmt::format("{:.0f}", 100.0 * d.verdict.explained_fraction),
+      d.verdict.residual_white_after ? "white" : "structured");
+  return html(t);
+}
+
 std::string effect_table(const DiagnosisRecord& d) {
   Table t{{"rank", "effect", "Bayes factor [dB]", "gap after", "shrink", "explained", "worst band [Hz]", "parameters (posterior)"},
           {}, {0, 2, 3, 4, 5}, {}, {}};
@@ -168,10 +195,18 @@ std::string verdict_sentence(const DiagnosisRecord& d) {
         "so the gap of {} is left unexplained.",
         d.effects[0].effect, number(d.effects[0].log_bayes_factor_deciban, 3), number(d.gap.total, 3));
   }
+  std::string members;
+  for (std::size_t k = 0; k < v.explanation.size(); ++k)
+    members += (k == 0 ? "" : k + 1 == v.explanation.size() ? " and " : ", ") + explanation_member_text(v.explanation[k]);
+  if (v.effect == "unexplained")
+    return fmt::format(
+        "The gap is real but unexplained: the best explanation the vocabulary offers, {}, shrinks it {}× ({} % of the "
+        "squared gap) and still leaves structure in the residual, so the cause lies outside the tested effects.",
+        members, fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction));
   return fmt::format(
-      "The gap is best explained by {} (Bayes factor {} dB against no effect{}): adding it shrinks the gap {}× "
-      "({} % of the squared gap), most in the {}{}.",
-      v.effect, number(v.log_bayes_factor_deciban, 4),
+      "The gap is explained by {} (the first alone: Bayes factor {} dB against no effect{}): together they shrink the "
+      "gap {}× ({} % of the squared gap), most in the {}{}.",
+      members, number(v.log_bayes_factor_deciban, 4),
       v.margin_deciban ? fmt::format(", {} dB ahead of the next", number(*v.margin_deciban, 3)) : std::string(),
       fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction), band_text(v.band),
       v.residual_white_after ? "; the residual left is white" : "; structure is left in the residual");
@@ -184,7 +219,7 @@ std::vector<plot::Figure> diagnosis_figures(const DiagnosisRecord& d) {
 }
 
 std::string diagnosis_report_html(const DiagnosisRecord& d) {
-  if (d.gap.bands.empty()) throw InputError("diagnosis report: no gap bands (is it an admitgen.diagnosis/1 file?)");
+  if (d.gap.bands.empty()) throw InputError("diagnosis report: no gap bands (is it an admitgen.diagnosis file?)");
   const auto figures = diagnosis_figures(d);
   const std::string real = std::filesystem::path(d.input.real_path).filename().string();
   std::string body = fmt::format("<h1>Diagnosis of <code>{}</code></h1>\n", escape_xml(real));
@@ -207,6 +242,9 @@ std::string diagnosis_report_html(const DiagnosisRecord& d) {
     body += figure(figures[1].svg(), "Gap that each stage of fit → filter → fixed point → simulation adds on its own, and "
                                      "the cumulative gap after it.") +
             stage_table(d.stages);
+  if (!d.verdict.explanation.empty())
+    body += std::string("<h2>") + (d.verdict.effect == "unexplained" ? "Best attempt at an explanation" : "Explanation") +
+            "</h2>\n" + explanation_table(d);
   body += "<h2>Effects</h2>\n" + effect_table(d);
   body += "<h2>Input and settings</h2>\n" + provenance(d);
   return page("admitgen diagnosis: " + real, body);

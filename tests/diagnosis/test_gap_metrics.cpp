@@ -65,23 +65,41 @@ TEST_CASE("effect likelihood: marginal Gaussian prefers the true model - noise s
   CHECK(l({truth, Eigen::ArrayXd::Constant(100, 3.0)}) == doctest::Approx(l({truth, {}})));
 }
 
-TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none") {
+TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none, unexplained when the explanation leaves structure") {
   const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
   const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
   const Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
+  std::vector<EffectCandidate> candidates(1);
+  candidates[0].name = "temperature";
+  candidates[0].priors = {{"delta_k", ParameterPrior::Shape::uniform, -10, 10}};
   Identification id;
   EffectResult a;
   a.name = "temperature";
   a.bayes_factor_deciban = 19.0;
   a.shrink = 4.0;
-  a.gap_after = measure_gap(f, y, y, rms_level(y));
+  a.explained = 1.0 - 1.0 / 16.0;
+  a.parameters = {{"delta_k", 3.0, 0.1, 2.8, 3.2, 3.0}};
+  a.gap_after = measure_gap(f, y, y, rms_level(y));  // zero residual: white
   id.effects = {a};
-  CHECK(decide(gap, id).effect == "none");
+  Explanation e;
+  CHECK(decide(gap, id, e, candidates).effect == "none");
   id.effects[0].bayes_factor_deciban = 25.0;
-  const Verdict v = decide(gap, id);
+  e.steps = {{0, 25.0, 4.0}};
+  e.joint = a;
+  const Verdict v = decide(gap, id, e, candidates);
   CHECK(v.effect == "temperature");
   CHECK(v.shrink == 4.0);
-  CHECK(decide(gap, Identification{}).effect == "none");
+  REQUIRE(v.explanation.size() == 1);
+  CHECK(v.explanation[0].parameters == std::vector<std::pair<std::string, double>>{{"delta_k", 3.0}});
+  // Residual left structured (a constant offset: lag-1 correlation 1), however much is explained.
+  e.joint.gap_after = measure_gap(f, y, y * 1.01, rms_level(y));
+  e.joint.shrink = 10.0;
+  e.joint.explained = 0.99;
+  const Verdict u = decide(gap, id, e, candidates);
+  CHECK(u.effect == "unexplained");
+  CHECK(u.explanation.size() == 1);  // the best attempt
+  CHECK_FALSE(u.white_after);
+  CHECK(decide(gap, Identification{}, Explanation{}, candidates).effect == "none");
 }
 
 }  // namespace admitgen::test

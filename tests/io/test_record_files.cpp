@@ -110,8 +110,32 @@ TEST_CASE("diagnosis.json: the bundled diagnoses read into records that write ba
   }
   const std::string good = test::read_text(test::sample("diagnosis/round_vs_rect_5cm/diagnosis.json"));
   const auto error = [](const std::string& text) { return error_of([&] { (void)io::parse_diagnosis(text, "d.json"); }); };
-  CHECK(error(R"({"schema": "admitgen.fit/1"})") == "d.json: JSON but not an admitgen diagnosis (schema admitgen.diagnosis/1)");
+  CHECK(error(R"({"schema": "admitgen.fit/1"})") == "d.json: JSON but not an admitgen diagnosis (schema admitgen.diagnosis/2)");
   CHECK(error(replaced(good, "\"log_evidence_none\"", "\"log_evidence_nothing\"")) == "d.json: missing key 'log_evidence_none'");
   CHECK(error(replaced(good, "\"white\": ", "\"white\": 1, \"w\": ")) ==
         "d.json: expected true or false at key 'gap.whiteness.white' (value '1')");
+}
+
+TEST_CASE("diagnosis.json: an admitgen.diagnosis/1 file is read, its verdict effect becoming the explanation") {
+  const std::string name = "diagnosis/round_vs_rect_5cm/diagnosis.json";
+  const auto current = io::parse_diagnosis(test::read_text(test::sample(name)), name);
+  // The /1 form of the same diagnosis: its schema, and a verdict without "explanation".
+  auto old = current;
+  old.schema = "admitgen.diagnosis/1";
+  old.verdict.effect = current.effects.at(1).effect;  // a /1 verdict named one effect (not necessarily the first)
+  std::string text = io::diagnosis_text(old);
+  const auto start = text.find("\"explanation\": [");
+  REQUIRE(start != std::string::npos);
+  const auto end = text.find("\"shrink\":", start);
+  text.erase(start, end - start);
+  const auto v1 = io::parse_diagnosis(text, "old.json");
+  CHECK(v1.schema == "admitgen.diagnosis/2");
+  REQUIRE(v1.verdict.explanation.size() == 1);
+  CHECK(v1.verdict.explanation[0].effect == current.effects[1].effect);
+  CHECK(v1.verdict.explanation[0].parameters == current.effects[1].parameters);
+  CHECK(v1.verdict.explanation[0].shrink_added == current.verdict.shrink);
+  old.verdict.effect = "none";
+  std::string none = io::diagnosis_text(old);
+  none.erase(none.find("\"explanation\": ["), none.find("\"shrink\":", none.find("\"explanation\": [")) - none.find("\"explanation\": ["));
+  CHECK(io::parse_diagnosis(none, "old.json").verdict.explanation.empty());
 }

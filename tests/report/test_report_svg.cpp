@@ -262,10 +262,22 @@ TEST_CASE("report: diagnosis figures show the gap per band before and after the 
   const std::string html = report::diagnosis_report_html(d);
   check_self_contained_page(html);
   CHECK(html == report::diagnosis_report_html(d));
+  // The sample's verdict: unexplained, with its best attempt of three effects (1.87×) in sentence and table.
+  REQUIRE(d.verdict.effect == "unexplained");
+  REQUIRE(d.verdict.explanation.size() == 3);
   const std::string verdict = report::verdict_sentence(d);
-  CHECK(verdict.find("edge_gap") != std::string::npos);
-  CHECK(verdict.find("1.30×") != std::string::npos);
-  CHECK(verdict.find("630 Hz band (562–708 Hz)") != std::string::npos);
+  CHECK(verdict.find("unexplained") != std::string::npos);
+  for (const auto& m : d.verdict.explanation) CHECK(verdict.find(m.effect) != std::string::npos);
+  CHECK(verdict.find("1.87×") != std::string::npos);
+  CHECK(html.find("Best attempt at an explanation") != std::string::npos);
+  // Named instead: the explanation's effects and the band it explains most.
+  auto named = d;
+  named.verdict.effect = d.verdict.explanation[0].effect;
+  const std::string sentence = report::verdict_sentence(named);
+  CHECK(sentence.find("The gap is explained by edge_gap") != std::string::npos);
+  CHECK(sentence.find(" and temperature") != std::string::npos);
+  CHECK(sentence.find("630 Hz band (562–708 Hz)") != std::string::npos);
+  CHECK(report::diagnosis_report_html(named).find("<h2>Explanation</h2>") != std::string::npos);
   for (const auto& e : d.effects) CHECK(html.find(e.effect) != std::string::npos);
   // Tells how to get the stages, naming what a diagnosis needs (library text names no command-line flags).
   CHECK(html.find("a diagnosis against a fit (fit.json) at a sample rate shows") != std::string::npos);

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// Combined explanations (docs/diagnosis.md, "Combined explanations"): real gaps are rarely one effect.
+/// After the single effects (effect_identification.hpp), a greedy forward selection by evidence:
+///
+///   E₁ = the single effect with the largest evidence, if BF(E₁ : none) ≥ 20 dB (else no explanation);
+///   round r: for every candidate e not in E_r, the evidence of E_r + e with all its parameters free
+///   (fitted jointly, combine_effects); the best is accepted if BF(E_r + e : E_r) ≥ 20 dB;
+///   stop when no addition is decisive, when the residual of E_r is white (residual_whiteness.hpp), or at
+///   kMaxExplanationEffects members. A white residual has no structure left in its mean, but a noise
+///   shape (heteroscedastic_noise) does not show in the lag-1 test: with a white residual the round
+///   still tries the noise-stage effects, and only them.
+///
+/// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
+/// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
+/// only fits noise is not decisive. Round r samples on the seed streams r·n + i (n candidates), after
+/// the single effects' 0 … n − 1, so the search is deterministic whatever the thread count.
+#pragma once
+
+#include "diagnosis/effect_identification.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace admitgen::diagnosis {
+
+/// Members at most (bounds the search's cost; a gap that needs more is reported as it stands).
+inline constexpr std::size_t kMaxExplanationEffects = 3;
+
+struct ExplanationStep {
+  std::size_t candidate = 0;          ///< index into the candidates
+  double bayes_factor_deciban = 0.0;  ///< of the explanation with this member against the one without it
+  double shrink_added = 1.0;          ///< gap without this member / gap with it (the others refitted jointly)
+};
+
+struct Explanation {
+  std::vector<ExplanationStep> steps;  ///< in the order accepted; empty when no single effect is decisive
+  /// The accepted members fitted jointly; priors and parameters concatenated in step order (gap fields
+  /// and Bayes factor against no effect filled). Meaningless when steps is empty.
+  EffectResult joint;
+  /// The parameter summaries of member k: joint.parameters[offset(k) …].
+  std::vector<ParameterSummary> member_parameters(std::size_t k, const std::vector<EffectCandidate>& candidates) const;
+};
+
+/// The search above, from the single effects of identify_effects (same candidates, f_hz and y_real).
+Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, const Gap& gap_before,
+                    const std::vector<EffectCandidate>& candidates, const Identification& identification,
+                    const IdentificationSettings& settings, Progress& progress);
+
+}  // namespace admitgen::diagnosis

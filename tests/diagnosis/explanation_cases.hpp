@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: MIT
+/// @file
+/// The validation cases of combined explanations, catalogue parameters and out-of-vocabulary gaps
+/// (docs/diagnosis.md, "Validation"), generated like the single-effect cases (validation_cases.hpp), and
+/// how each is scored. Shared by the compact CTest (tests/diagnosis/test_explanation_suite.cpp) and the
+/// full sweep (bench/diagnose/bench_validation.cpp, which prints the tables).
+#pragma once
+
+#include "validation_cases.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace admitgen::test {
+
+/// Two effects at their clear sizes (validation_cases.hpp effect_sizes), every pair of the ten
+/// documented effects, on the porous base (the one where air_gap is an effect of its own: on the others
+/// the deepest layer is air and a gap behind it is the material candidate of that layer's d). Pairs with
+/// tube_losses use its clear tube (29 mm, x1 = 0.3 m).
+inline std::vector<ValidationCase> two_effect_cases() {
+  const BaseMaterial& m = base_materials()[0];
+  const auto sizes = effect_sizes(m, 600.0);
+  std::vector<ValidationCase> out;
+  std::uint64_t seed = 500;
+  for (std::size_t a = 0; a < sizes.size(); ++a)
+    for (std::size_t b = a + 1; b < sizes.size(); ++b) {
+      ValidationCase c;
+      c.material = m;
+      c.truth = sizes[a].name;
+      c.effect = sizes[a].clear;
+      c.truth_second = sizes[b].name;
+      c.second = sizes[b].clear;
+      c.clear = true;
+      c.seed = ++seed;
+      if (c.truth == "tube_losses" || c.truth_second == "tube_losses") {
+        c.tube_diameter_m = 0.029;
+        c.mic_distance_m = 0.3;
+      }
+      c.label = fmt::format("two {} + {}", c.effect, c.second);
+      out.push_back(c);
+    }
+  return out;
+}
+
+/// One catalogue parameter off, for each layer model and for multi-layer SPECs (`parameter` in SPEC
+/// naming, `ratio` the true value over the catalogue value).
+inline std::vector<ValidationCase> material_cases() {
+  struct Off {
+    std::string name, spec, real_spec, parameter;
+    double ratio;
+  };
+  const std::string jca = "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + air(d=20mm)";
+  const std::vector<Off> offs{
+      {"miki", "miki(sigma=10000, d=50mm)", "miki(sigma=14000, d=50mm)", "1.sigma", 1.4},
+      {"miki", "miki(sigma=10000, d=50mm)", "miki(sigma=10000, d=40mm)", "1.d", 0.8},
+      {"delany_bazley", "delany_bazley(sigma=20000, d=40mm)", "delany_bazley(sigma=14000, d=40mm)", "1.sigma", 0.7},
+      {"delany_bazley", "delany_bazley(sigma=20000, d=40mm)", "delany_bazley(sigma=20000, d=50mm)", "1.d", 1.25},
+      {"jca+air", jca, "jca(phi=0.94, sigma=60000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + air(d=20mm)",
+       "1.sigma", 1.5},
+      {"jca+air", jca, "jca(phi=0.94, sigma=40000, alpha_inf=1.38, lambda=56um, lambda_th=110um, d=30mm) + air(d=20mm)",
+       "1.alpha_inf", 1.3},
+      {"jca+air", jca, "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=24mm) + air(d=20mm)",
+       "1.d", 0.8},
+      {"jca+air", jca, "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + air(d=26mm)",
+       "2.d", 1.3},
+      {"horoshenkov", "horoshenkov(phi=0.9, pore=150um, sigma_s=0.3, d=40mm)",
+       "horoshenkov(phi=0.9, pore=210um, sigma_s=0.3, d=40mm)", "1.pore", 1.4},
+      {"horoshenkov", "horoshenkov(phi=0.9, pore=150um, sigma_s=0.3, d=40mm)",
+       "horoshenkov(phi=0.9, pore=150um, sigma_s=0.3, d=50mm)", "1.d", 1.25},
+      {"mpp+air", "mpp(hole=0.4mm, t=0.4mm, p=1%) + air(d=50mm)", "mpp(hole=0.52mm, t=0.4mm, p=1%) + air(d=50mm)",
+       "1.hole", 1.3},
+      {"mpp+air", "mpp(hole=0.4mm, t=0.4mm, p=1%) + air(d=50mm)", "mpp(hole=0.4mm, t=0.4mm, p=0.7%) + air(d=50mm)",
+       "1.p", 0.7},
+      {"mpp+air", "mpp(hole=0.4mm, t=0.4mm, p=1%) + air(d=50mm)", "mpp(hole=0.4mm, t=0.4mm, p=1%) + air(d=40mm)", "2.d",
+       0.8},
+      {"miki+miki", "miki(sigma=20000, d=20mm) + miki(sigma=5000, d=30mm)",
+       "miki(sigma=20000, d=20mm) + miki(sigma=7500, d=30mm)", "2.sigma", 1.5},
+      {"miki+miki", "miki(sigma=20000, d=20mm) + miki(sigma=5000, d=30mm)",
+       "miki(sigma=20000, d=26mm) + miki(sigma=5000, d=30mm)", "1.d", 1.3},
+      {"mpp+air+miki", "mpp(hole=0.5mm, t=0.5mm, p=2%) + air(d=20mm) + miki(sigma=10000, d=30mm)",
+       "mpp(hole=0.5mm, t=0.5mm, p=2%) + air(d=20mm) + miki(sigma=15000, d=30mm)", "3.sigma", 1.5},
+  };
+  std::vector<ValidationCase> out;
+  std::uint64_t seed = 700;
+  for (const auto& o : offs) {
+    ValidationCase c;
+    c.material = {o.name, o.spec, 0.05};
+    c.real_spec = o.real_spec;
+    c.truth = "material";
+    c.parameter = o.parameter;
+    c.ratio = o.ratio;
+    c.clear = true;
+    c.seed = ++seed;
+    c.label = fmt::format("material {} {} x{}", o.name, o.parameter, o.ratio);
+    out.push_back(c);
+  }
+  return out;
+}
+
+/// y − a resonance of admittance: an absorption dip, which frame_resonance (y_peak > 0) cannot make.
+inline Distortion absorption_dip(double f0_hz, double q, double depth) {
+  return [=](const Eigen::ArrayXd& f, const Eigen::ArrayXcd& y) {
+    const Eigen::ArrayXd detuning = q * (f / f0_hz - f0_hz / f);
+    Eigen::ArrayXcd out = y;
+    for (Eigen::Index i = 0; i < f.size(); ++i) out[i] -= depth / std::complex<double>(1.0, detuning[i]);
+    return out;
+  };
+}
+
+/// A running mean over 2·half + 1 points along frequency (smoothing by the tube's software).
+inline Distortion smoothing(int half) {
+  return [=](const Eigen::ArrayXd&, const Eigen::ArrayXcd& y) {
+    Eigen::ArrayXcd out(y.size());
+    for (Eigen::Index i = 0; i < y.size(); ++i) {
+      const Eigen::Index lo = std::max<Eigen::Index>(0, i - half), hi = std::min<Eigen::Index>(y.size() - 1, i + half);
+      out[i] = y.segment(lo, hi - lo + 1).mean();
+    }
+    return out;
+  };
+}
+
+/// Microphone ratio drifting with frequency, (1 + g (f/f_top)²) e^{jφ f/f_top}, through the reference
+/// tube's chain (a constant mismatch is mic_mismatch; a drift is not in the vocabulary).
+inline Distortion mic_drift(double gain, double phase_deg, const ValidationCase& c) {
+  const TubeSetup tube = case_tube(c);
+  return [=](const Eigen::ArrayXd& f, const Eigen::ArrayXcd& y) {
+    const Air air = Air::at_celsius(tube.temperature_c);
+    const TubeGeometry g = tube.geometry("mic drift");
+    Eigen::ArrayXcd out(y.size());
+    for (Eigen::Index i = 0; i < y.size(); ++i) {
+      const double x = f[i] / f[f.size() - 1];
+      ChainDeviation d;
+      d.mic_ratio = (1.0 + gain * x * x) * std::polar(1.0, phase_deg * x * static_cast<double>(EIGEN_PI) / 180.0);
+      out[i] = measure_through_chain(y.segment(i, 1), f.segment(i, 1), air, g, d)[0];
+    }
+    return out;
+  };
+}
+
+/// Gaps outside the vocabulary: a different material law than the SPEC's, a sample thicker or thinner
+/// than the simulated table assumed, smoothing by the tube software, a frequency-dependent microphone
+/// drift, an absorption dip.
+inline std::vector<ValidationCase> out_of_vocabulary_cases() {
+  std::vector<ValidationCase> out;
+  std::uint64_t seed = 900;
+  const auto add = [&](ValidationCase c, const std::string& what) {
+    c.truth = "unexplained";
+    c.clear = true;
+    c.seed = ++seed;
+    c.label = fmt::format("oov {} {}", c.material.name, what);
+    out.push_back(c);
+  };
+  const auto& bases = base_materials();
+  for (const auto* law : {"jca(phi=0.95, sigma=10000, alpha_inf=1.4, lambda=80um, lambda_th=160um, d=50mm)",
+                          "horoshenkov(phi=0.95, pore=300um, sigma_s=0.5, d=50mm)"}) {
+    ValidationCase c;
+    c.material = bases[0];
+    c.real_spec = law;
+    add(c, fmt::format("law {}", law));
+  }
+  for (const char* d : {"40mm", "65mm"}) {
+    ValidationCase c;
+    c.material = bases[0];
+    c.real_spec = fmt::format("miki(sigma=10000, d={})", d);
+    c.sim_table = true;
+    add(c, fmt::format("thickness {} against a 50mm table", d));
+  }
+  for (const auto& m : bases) {
+    ValidationCase c;
+    c.material = m;
+    c.distort = smoothing(6);
+    add(c, "smoothing 13 points");
+    c.distort = absorption_dip(m.name == "porous" ? 900.0 : 1400.0, 6.0, 0.15);
+    add(c, "absorption dip");
+    c.distort = mic_drift(0.15, 4.0, c);
+    add(c, "mic drift 15 % / 4 deg at the top");
+  }
+  return out;
+}
+
+/// Whether the verdict's explanation holds `effect` (for material: with `parameter`).
+inline bool explains(const diagnosis::Verdict& v, const std::string& effect, const std::string& parameter = "") {
+  return std::any_of(v.explanation.begin(), v.explanation.end(), [&](const diagnosis::VerdictMember& m) {
+    return m.effect == effect && (parameter.empty() || (!m.parameters.empty() && m.parameters.front().first == parameter));
+  });
+}
+
+/// The ratio the explanation gives to `parameter` (0 when absent).
+inline double material_ratio(const diagnosis::Verdict& v, const std::string& parameter) {
+  for (const auto& m : v.explanation)
+    if (m.effect == "material" && m.parameters.front().first == parameter) return m.parameters.front().second;
+  return 0.0;
+}
+
+/// Gap before / gap left by the exact model of the case (the truth without noise).
+inline double exact_shrink(const ValidationCase& c, const diagnosis::Diagnosis& d) {
+  const auto request = case_request(c);
+  return d.gap.total / diagnosis::measure_gap(request.real.f_hz, request.real.y, exact_y(c), d.level).total;
+}
+
+/// The largest shrink of any single effect.
+inline double best_single_shrink(const diagnosis::Diagnosis& d) {
+  double best = 1.0;
+  for (const auto& e : d.identification.effects) best = std::max(best, e.shrink);
+  return best;
+}
+
+}  // namespace admitgen::test
