@@ -119,27 +119,32 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   inv_chol_.setIdentity(p_, p_);
   llt.matrixL().solveInPlace(inv_chol_);
   const auto tail = [&](double z) { return tail_.upper(z); };
-  // P(−z_lo ≤ T ≤ z_hi) and its complement, from upper tails only (no cancellation against 1 when the
-  // centre lies outside the interval).
-  const auto interval = [&](double z_lo, double z_hi, double& inside, double& outside) {
+  // P(−z_lo ≤ T ≤ z_hi), its complement and ln of an upper bound of it, from upper tails only (no
+  // cancellation against 1 when the centre lies outside the interval). Where the interval lies beyond
+  // the resolvable tail (inside = 0 in double), the bound stays finite (StudentTail::log_upper_bound): the
+  // sampled likelihood then still falls with the distance of r̂ from the box instead of meeting a floor.
+  const auto interval = [&](double z_lo, double z_hi, double& inside, double& outside, double& log_inside) {
     if (z_lo < 0.0) {
       inside = tail(-z_lo) - tail(z_hi);
       outside = 1.0 - inside;
+      log_inside = inside > 0.0 ? std::log(inside) : tail_.log_upper_bound(-z_lo);
     } else if (z_hi < 0.0) {
       inside = tail(-z_hi) - tail(z_lo);
       outside = 1.0 - inside;
+      log_inside = inside > 0.0 ? std::log(inside) : tail_.log_upper_bound(-z_hi);
     } else {
       outside = tail(z_lo) + tail(z_hi);
       inside = 1.0 - outside;
+      log_inside = std::log(std::max(inside, 1e-300));
     }
   };
-  double sum_outside = 0.0, min_inside = 1.0;
+  double sum_outside = 0.0, log_min_inside = 0.0;
   for (Eigen::Index k = 0; k < p_; ++k) {
     const double s = c.scale[k] * inv_chol_.col(k).norm() * std::sqrt(c.s_min / c.nu);
-    double inside, outside;
-    interval((c.mean[k] - lo_[k]) / s, (hi_[k] - c.mean[k]) / s, inside, outside);
+    double inside, outside, log_inside;
+    interval((c.mean[k] - lo_[k]) / s, (hi_[k] - c.mean[k]) / s, inside, outside, log_inside);
     sum_outside += outside;
-    min_inside = std::min(min_inside, inside);
+    log_min_inside = std::min(log_min_inside, log_inside);
   }
   // Directions v_j = W⁻¹e_j, e_j the eigenvectors of W⁻¹M⁻¹W⁻¹ (the covariance in box units, W =
   // diag(box widths)), are M⁻¹-orthogonal, so the projections v_jᵀr are uncorrelated univariate t's of scale
@@ -171,16 +176,14 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
       const double s = std::sqrt(var), centre = v.dot(c.mean);
       slab_lo_[j] = (lo_v - centre) / s;
       slab_hi_[j] = (hi_v - centre) / s;
-      double inside, outside;
-      interval(-slab_lo_[j], slab_hi_[j], inside, outside);
-      min_inside = std::min(min_inside, inside);
+      double inside, outside, log_inside;
+      interval(-slab_lo_[j], slab_hi_[j], inside, outside, log_inside);
+      log_min_inside = std::min(log_min_inside, log_inside);
       log_product += outside < 0.5 ? std::log1p(-outside) : std::log(std::max(inside, 1e-300));
       if (outside > 1e-12) ++cut;
     }
   }
-  // P_up is floored at 1e-300 (keeps ln L finite where the t lies far outside the box); a floor only
-  // raises the upper bound, and such points have P_lo = 0, so they count fully in the truncation check.
-  c.log_p_up = std::log(std::max(min_inside, 1e-300));
+  c.log_p_up = log_min_inside;
   c.log_p_lo = sum_outside < 1.0 ? std::log1p(-sum_outside) : -std::numeric_limits<double>::infinity();
   // P̃: with one cut direction the product is that slab's exact t probability; with several the slabs
   // share the t's scale variable W ~ χ²_ν, so P̃ = E_W[Π_j P_j | W] (Gaussian slabs given W; quadrature in
