@@ -2,9 +2,9 @@
 // An importance-sampling estimate of an order's evidence over the poles, with the residues integrated out
 // (inference/residue_marginal.hpp) and no nested sampling: Z = E_q[L(ψ) π(ψ)/q(ψ)] (docs/method.md, "Status
 // of the pole sampler"). The proposal q is built from posterior samples of any runs (both samplers, so a mode
-// either found is covered): a mixture of multivariate t_5 kernels centred on K resampled posterior points,
-// each with covariance h²Σ (Σ the pooled posterior covariance, h Silverman's bandwidth), plus a defensive
-// t_3(mean, 4Σ) with weight 0.2. q only sets the variance; the estimate is unbiased for any q that covers the
+// either found is covered): a mixture of multivariate t_5 kernels centred on K resampled posterior points of
+// each run, with covariance h²Σ_r (Σ_r that run's posterior covariance, h Silverman's bandwidth), plus a
+// defensive t_3(mean_r, 4Σ_r) per run with weight 0.2 in all. q only sets the variance; the estimate is unbiased for any q that covers the
 // posterior. Its error is the sample standard error of the mean of the ratios.
 //
 // The integral runs over the fundamental domain D of the order's symmetries, D = {λ ascending, β ≥ 0, pairs
@@ -90,32 +90,36 @@ inline ImportanceEstimate importance_log_z(const Measurement& data, const Order&
   const std::vector<int> poles = pole_indices(order);
   const Eigen::Index d = static_cast<Eigen::Index>(poles.size());
   Rng rng(seed);
-  std::vector<Eigen::VectorXd> centres;
+  // Per run: K resampled posterior points, their covariance Σ_r; kernels t_5(c, h²Σ_r) and a defensive
+  // t_3(mean_r, 4Σ_r). Runs are not pooled: a run stuck in another mode would otherwise widen every kernel.
+  std::vector<detail::MultivariateT> kernel, wide;
+  const double dd = static_cast<double>(d), k = static_cast<double>(kernels);
+  const double h = std::pow(4.0 / (dd + 2.0), 1.0 / (dd + 4.0)) * std::pow(k, -1.0 / (dd + 4.0));
   for (const ModelResult* m : runs) {
     const auto idx = resample_indices(posterior_weights(m->run), static_cast<std::size_t>(kernels), rng);
+    std::vector<Eigen::VectorXd> centres;
     for (std::size_t i : idx) {
       Eigen::VectorXd psi(d);
-      for (Eigen::Index k = 0; k < d; ++k) psi[k] = m->run.point(i)[poles[static_cast<std::size_t>(k)]];
+      for (Eigen::Index j = 0; j < d; ++j) psi[j] = m->run.point(i)[poles[static_cast<std::size_t>(j)]];
       centres.push_back(psi);
     }
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
+    for (const auto& c : centres) mean += c;
+    mean /= k;
+    Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(d, d);
+    for (const auto& c : centres) cov += (c - mean) * (c - mean).transpose();
+    cov /= k - 1.0;
+    cov.diagonal().array() += 1e-9 * cov.diagonal().array().maxCoeff() + 1e-12;
+    for (const auto& c : centres) kernel.emplace_back(c, h * h * cov, 5.0);
+    wide.emplace_back(mean, 4.0 * cov, 3.0);
   }
-  Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
-  for (const auto& c : centres) mean += c;
-  mean /= static_cast<double>(centres.size());
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(d, d);
-  for (const auto& c : centres) cov += (c - mean) * (c - mean).transpose();
-  cov /= static_cast<double>(centres.size() - 1);
-  cov.diagonal().array() += 1e-9 * cov.diagonal().array().maxCoeff();
-  const double k = static_cast<double>(centres.size()), dd = static_cast<double>(d);
-  const double h = std::pow(4.0 / (dd + 2.0), 1.0 / (dd + 4.0)) * std::pow(k, -1.0 / (dd + 4.0));
-  std::vector<detail::MultivariateT> kernel;
-  for (const auto& c : centres) kernel.emplace_back(c, h * h * cov, 5.0);
-  const detail::MultivariateT wide(mean, 4.0 * cov, 3.0);
   constexpr double kWide = 0.2;
+  const double log_kernels = std::log(static_cast<double>(kernel.size())), log_wides = std::log(static_cast<double>(wide.size()));
   const auto log_q = [&](const Eigen::VectorXd& x) {
-    double lk = -std::numeric_limits<double>::infinity();
+    double lk = -std::numeric_limits<double>::infinity(), lw = lk;
     for (const auto& t : kernel) lk = detail::log_add(lk, t.log_density(x));
-    return detail::log_add(std::log1p(-kWide) + lk - std::log(k), std::log(kWide) + wide.log_density(x));
+    for (const auto& t : wide) lw = detail::log_add(lw, t.log_density(x));
+    return detail::log_add(std::log1p(-kWide) + lk - log_kernels, std::log(kWide) + lw - log_wides);
   };
   // Prior density on D: Q! S! 2^S / V_ψ.
   double log_prior = -order.q() * std::log(priors.lambda.width()) -
@@ -125,7 +129,7 @@ inline ImportanceEstimate importance_log_z(const Measurement& data, const Order&
   for (int j = 2; j <= order.s(); ++j) log_prior += std::log(static_cast<double>(j));
   std::vector<double> log_ratio;
   for (long i = 0; i < draws; ++i) {
-    const Eigen::VectorXd psi = rng.uniform() < kWide ? wide.draw(rng)
+    const Eigen::VectorXd psi = rng.uniform() < kWide ? wide[static_cast<std::size_t>(rng.below(wide.size()))].draw(rng)
                                                        : kernel[static_cast<std::size_t>(rng.below(kernel.size()))].draw(rng);
     const ResidueConditional* c = detail::in_domain(order, priors, psi) ? &marginal.conditional(psi.data()) : nullptr;
     if (c == nullptr || !c->valid) {
