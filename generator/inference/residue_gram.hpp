@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// The normal equations of the residues in one fused pass over the frequency points (docs/method.md,
-/// "Residues given the poles" and "Cost of the pole sampler"): with A = [Re Φ; Im Φ] and b = [Re D; Im D],
+/// "Residues given the poles", and "Status of the pole sampler" on its cost): with A = [Re Φ; Im Φ] and
+/// b = [Re D; Im D],
 ///   M = AᵀA = Σ_i (Re φ(ω_i) Re φ(ω_i)ᵀ + Im φ(ω_i) Im φ(ω_i)ᵀ),   g = Aᵀb,
 /// the basis values φ(ω_i) (model/residue_basis.hpp) computed per block of kGramLanes points and added
 /// into per-lane partial sums at once, so A is never stored (it does not fit in L1 for 1000 points).

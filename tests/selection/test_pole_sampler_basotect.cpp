@@ -1,8 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The pole sampler and the full sampler on a real measurement (Basotect round 10 cm, the README's quick
-// start) against an independent evidence: importance sampling over the poles (pole_importance.hpp), its
-// proposal built from the posterior samples of both samplers, so that a mode either of them found is
-// covered. docs/method.md, "Status of the pole sampler", records the figures.
+// The pole sampler on a real measurement (Basotect round 10 cm, the README's quick start) against an
+// independent evidence: importance sampling over the poles (pole_importance.hpp, no nested sampling), its
+// proposal built from the posterior samples of two pole runs of different seeds. docs/method.md, "Status of
+// the pole sampler", records these figures and those of the other orders (Q1S3, Q2S3, Q3S3, where the pole
+// sampler is not yet within 3 combined errors and the full sampler is 100-2200 nats low).
+//
+// Q2S2 with 100 live points, seeds 1 and 1001; importance sampling with 200 kernels per run, 20000 draws,
+// 2000 box draws, seed 17 (measured: effective sample size about 9700 of 20000, error 0.007 nats).
+// Tolerance: 3 combined standard errors √(e_ns² + e_is²) (99.7 % for two independent estimates). About
+// 5 s of CPU.
 #include "data/csv_reader.hpp"
 #include "pole_importance.hpp"
 #include "selection/fit.hpp"
@@ -11,63 +17,31 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <string>
 
 using namespace admitgen;
 
-namespace {
-
-Measurement quick_start_file() {
-  ReadOptions read;
-  read.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
-  return read_measurement(test::sample("basotect_tuberlin/round_10cm.csv"), read);
-}
-
-struct Comparison {
-  ModelResult poles, full;
-  test::ImportanceEstimate reference;
-};
-
-Comparison compare(const Measurement& data, const Order& order, int live, std::uint64_t seed) {
-  FitSettings settings;
-  settings.sampler.live = live;
-  settings.sampler.seed = seed;
-  settings.sampler_kind = SamplerKind::poles;
-  Comparison c{fit_order(data, order, settings), {Order(0, 0), {}, 0, 0.0, {}}, {}};
-  settings.sampler.seed = seed + 1000;
-  const ModelResult other = fit_order(data, order, settings);
-  settings.sampler_kind = SamplerKind::full;
-  settings.sampler.seed = seed;
-  if (std::getenv("FULL")) c.full = fit_order(data, order, settings);
-  std::vector<const ModelResult*> runs{&c.poles, &other};
-  if (std::getenv("FULL")) runs.push_back(&c.full);
-  c.reference = test::importance_log_z(data, order, PriorRanges::table1(), runs, 200, 20000, 2000, 17);
-  MESSAGE("second pole run (seed ", seed + 1000, "): ", other.run.log_z, " ± ", other.run.log_z_error);
-  MESSAGE(order.name(), " (", live, " live, seed ", seed, "): pole sampler ", c.poles.run.log_z, " ± ",
-          c.poles.run.log_z_error, " (", c.poles.sampler, ", box correction ", c.poles.truncation_correction, " ± ",
-          c.poles.truncation_correction_error, ", ESS ratio ", c.poles.reweighted_ess_ratio, ", ", c.poles.run.calls,
-          " calls, ", c.poles.seconds, " s), full sampler ", c.full.run.log_z, " ± ", c.full.run.log_z_error, " (",
-          c.full.run.calls, " calls, ", c.full.seconds, " s), importance sampling ", c.reference.log_z, " ± ",
-          c.reference.error, " (ESS ", c.reference.ess, " of 20000)");
-  return c;
-}
-
-}  // namespace
-
 TEST_SUITE("statistical") {
-  TEST_CASE("Basotect measure (dev)") {
-    const Measurement data = quick_start_file();
-    const char* env = std::getenv("ORDERS");
-    std::string orders = env ? env : "Q1S3";
-    const int live = std::getenv("LIVE") ? std::atoi(std::getenv("LIVE")) : 100;
-    std::size_t pos = 0;
-    while (pos < orders.size()) {
-      const std::size_t end = orders.find(',', pos);
-      const std::string name = orders.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-      compare(data, Order::parse(name), live, 1);
-      if (end == std::string::npos) break;
-      pos = end + 1;
-    }
+  TEST_CASE("pole sampler: ln Z of Basotect round 10 cm Q2S2 equals importance sampling over the poles") {
+    ReadOptions read;
+    read.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
+    const Measurement data = read_measurement(test::sample("basotect_tuberlin/round_10cm.csv"), read);
+    const Order order(2, 2);
+    FitSettings settings;
+    settings.sampler.live = 100;
+    settings.sampler_kind = SamplerKind::poles;
+    settings.sampler.seed = 1;
+    const ModelResult poles = fit_order(data, order, settings);
+    settings.sampler.seed = 1001;
+    const ModelResult other = fit_order(data, order, settings);
+    const test::ImportanceEstimate reference =
+        test::importance_log_z(data, order, PriorRanges::table1(), {&poles, &other}, 200, 20000, 2000, 17);
+    MESSAGE(order.name(), ": pole sampler ", poles.run.log_z, " ± ", poles.run.log_z_error, " and ", other.run.log_z,
+            " ± ", other.run.log_z_error, " (", poles.sampler, ", box correction ", poles.truncation_correction,
+            "), importance sampling ", reference.log_z, " ± ", reference.error, " (effective sample size ", reference.ess,
+            " of 20000)");
+    CHECK(poles.sampler == "poles_analytic_residues");
+    CHECK(reference.ess >= 1000.0);  // otherwise the error of the reference itself is not credible
+    for (const ModelResult* m : {&poles, &other})
+      CHECK(std::abs(m->run.log_z - reference.log_z) <= 3.0 * std::hypot(m->run.log_z_error, reference.error));
   }
 }
