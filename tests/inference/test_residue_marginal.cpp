@@ -71,7 +71,7 @@ TEST_CASE("residue marginal: basis columns equal model/residue_basis.hpp") {
   }
 }
 
-TEST_CASE("residue gram: the fused pass equals AᵀA and Aᵀb from residue_basis.hpp (Q3S3; 37, 43 and 8 points)") {
+TEST_CASE("residue gram: the fused pass equals AᵀA and Aᵀb from residue_basis.hpp (Q3S3 at 37, 43 and 8 points)") {
   // Points 37 and 43 (5 and 3 lanes of padding in the last block of 8) and 8 (none); every order term.
   const Order o(3, 3);
   Eigen::VectorXd theta = Eigen::VectorXd::Zero(o.dim());
