@@ -9,11 +9,16 @@
 ///  2-3 for each sampler in turn (full, then poles), plus Q1S1 alone, so the two print side by side.
 ///  4. with --basotect: the README's quick start (samples/basotect_tuberlin/round_10cm.csv, columns
 ///     f,_,_,_,_,re,im,_, 100 live points, 2 threads), each sampler in turn.
-/// Usage: bench_fit [DATA.csv] [--quick] [--basotect]  (--quick skips the 1-thread grid)
+///  5. with --order QxSy (and optionally --live N, --sampler full|poles, --basotect for the quick-start
+///     file): that order alone, no other section: calls, seconds, ns per call, the sampler used and
+///     any fallback (for profiling one order).
+/// Usage: bench_fit [DATA.csv] [--quick] [--basotect] [--order QxSy [--live N] [--sampler KIND] [--seed S]]
+///  (--quick skips the 1-thread grid)
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/likelihood.hpp"
 #include "inference/pole_space.hpp"
+#include "inference/residue_gram.hpp"
 #include "inference/residue_marginal.hpp"
 #include "inference/priors.hpp"
 #include "selection/fit.hpp"
@@ -21,6 +26,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <ctime>
 #include <complex>
 #include <cstring>
 #include <string>
@@ -94,22 +100,51 @@ double grid(const Measurement& data, int threads, bool print_models, SamplerKind
   s.smax = smax;
   Progress quiet(false);
   const auto t0 = Clock::now();
+  const std::clock_t c0 = std::clock();
   const FitResult fit = run_fit(data, s, quiet);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  fmt::print("(process CPU {:.1f} s over {:.1f} s wall, all threads, re-runs included)\n",
+             static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC, wall);
   if (print_models) {
-    fmt::print("{:<6} {:>12} {:>12} {:>7} {:>10} {:>10} {:>10} {:>6}\n", "order", "calls", "ln Z", "± err", "seconds",
-               "calls/iter", "ns/call", "used");
+    fmt::print("{:<6} {:>10} {:>12} {:>7} {:>9} {:>9} {:>10} {:>11} {:>6}  {}\n", "order", "calls", "ln Z", "± err", "wall s",
+               "CPU s", "calls/iter", "CPU ns/call", "used", "fallback");
     long total = 0;
+    double cpu = 0.0;
     for (const auto& m : fit.models) {
       total += m.run.calls;
-      fmt::print("{:<6} {:>12} {:>12.2f} {:>7.2f} {:>10.2f} {:>10.1f} {:>10.0f} {:>6}\n", m.order.name(), m.run.calls,
-                 m.run.log_z, m.run.log_z_error, m.seconds,
+      cpu += m.cpu_seconds;
+      fmt::print("{:<6} {:>10} {:>12.2f} {:>7.2f} {:>9.2f} {:>9.2f} {:>10.1f} {:>11.0f} {:>6}  {}\n", m.order.name(),
+                 m.run.calls, m.run.log_z, m.run.log_z_error, m.seconds, m.cpu_seconds,
                  static_cast<double>(m.run.calls) / std::max(1.0, static_cast<double>(m.run.iterations)),
-                 m.seconds * 1e9 / static_cast<double>(m.run.calls), m.sampler == "full" ? "full" : "poles");
+                 m.cpu_seconds * 1e9 / static_cast<double>(m.run.calls), m.sampler == "full" ? "full" : "poles",
+                 m.sampler_note);
     }
-    fmt::print("total likelihood calls: {}\n", total);
+    fmt::print("total likelihood calls: {}, CPU {:.1f} s (summed over orders, re-runs for missed modes excluded)\n",
+               total, cpu);
+    for (const auto& w : fit.warnings) fmt::print("warning: {}\n", w);
   }
   return wall;
+}
+
+/// One order alone with one sampler (section 5 of the file comment).
+void single_order(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed) {
+  FitSettings s;
+  s.sampler_kind = kind;
+  s.sampler.live = live;
+  s.sampler.seed = seed;
+  const auto t0 = Clock::now();
+  const std::clock_t c0 = std::clock();
+  const ModelResult m = fit_order(data, order, s);
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  fmt::print("{} ({} points, {} live, seed {}): {:.3f} s wall, {:.3f} s CPU, {} calls, {} iterations, {:.0f} ns/call "
+             "(CPU), ln Z {:.2f} ± {:.2f}, sampler {}\n",
+             order.name(), data.size(), live, seed, wall, cpu, m.run.calls, m.run.iterations,
+             cpu * 1e9 / static_cast<double>(m.run.calls), m.run.log_z, m.run.log_z_error, m.sampler);
+  if (m.sampler != "full" || !m.sampler_note.empty())
+    fmt::print("  box correction {:.3f} ± {:.3f} nats, effective-sample ratio {:.2f}{}{}\n", m.truncation_correction,
+               m.truncation_correction_error, m.reweighted_ess_ratio, m.sampler_note.empty() ? "" : "; ",
+               m.sampler_note);
 }
 
 }  // namespace
@@ -117,12 +152,30 @@ double grid(const Measurement& data, int threads, bool print_models, SamplerKind
 int main(int argc, char** argv) {
   std::string path = std::string(ADMITGEN_SAMPLES) + "/reference/q1s1_sigma0.01.csv";
   bool quick = false, basotect = false;
+  std::string order_name;
+  int live = 100;
+  std::uint64_t seed = 1;
+  SamplerKind single_kind = SamplerKind::poles;
   for (int i = 1; i < argc; ++i) {
+    const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     else if (std::strcmp(argv[i], "--basotect") == 0) basotect = true;
+    else if (std::strcmp(argv[i], "--order") == 0 && has_value) order_name = argv[++i];
+    else if (std::strcmp(argv[i], "--live") == 0 && has_value) live = std::stoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--seed") == 0 && has_value) seed = std::stoull(argv[++i]);
+    else if (std::strcmp(argv[i], "--sampler") == 0 && has_value) single_kind = parse_sampler_kind(argv[++i]);
     else path = argv[i];
   }
+  const std::string quick_start = std::string(ADMITGEN_SAMPLES) + "/basotect_tuberlin/round_10cm.csv";
+  ReadOptions foam_options{};
+  foam_options.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
+  if (!order_name.empty()) {
+    const Measurement data = basotect ? read_measurement(quick_start, foam_options) : read_measurement(path, ReadOptions{});
+    single_order(data, Order::parse(order_name), single_kind, live, seed);
+    return 0;
+  }
   const Measurement data = read_measurement(path, ReadOptions{});
+  fmt::print("SIMD path of the pole sampler's normal equations: {}\n", residue_gram_isa());
   likelihood_throughput(data);
   // Each sampler in turn, in one run (figures side by side; "used" says which sampler ran per order).
   for (const SamplerKind kind : {SamplerKind::full, SamplerKind::poles}) {
@@ -132,8 +185,9 @@ int main(int argc, char** argv) {
     FitSettings s;
     s.sampler_kind = kind;
     const ModelResult m = fit_order(data, Order(1, 1), s);
-    fmt::print("Q1S1: {:.2f} s, {} calls, ln Z {:.2f} ± {:.2f}\n",
-               std::chrono::duration<double>(Clock::now() - t0).count(), m.run.calls, m.run.log_z, m.run.log_z_error);
+    fmt::print("Q1S1: {:.2f} s wall, {:.2f} s CPU, {} calls, ln Z {:.2f} ± {:.2f}\n",
+               std::chrono::duration<double>(Clock::now() - t0).count(), m.cpu_seconds, m.run.calls, m.run.log_z,
+               m.run.log_z_error);
     fmt::print("\n## Q0-3 x S0-3 grid on {}, sampler {} (500 live points, Table 1 priors, seed 1)\n", path, name);
     const double two = grid(data, 2, true, kind);
     fmt::print("grid wall time, sampler {}, 2 threads: {:.2f} s\n", name, two);
@@ -143,10 +197,7 @@ int main(int argc, char** argv) {
     }
   }
   if (basotect) {
-    const std::string quick_start = std::string(ADMITGEN_SAMPLES) + "/basotect_tuberlin/round_10cm.csv";
-    ReadOptions options{};
-    options.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
-    const Measurement foam = read_measurement(quick_start, options);
+    const Measurement foam = read_measurement(quick_start, foam_options);
     for (const SamplerKind kind : {SamplerKind::full, SamplerKind::poles}) {
       const char* name = kind == SamplerKind::full ? "full" : "poles";
       fmt::print("\n## Quick start: {} ({} points), sampler {} (100 live points, 2 threads)\n", quick_start, foam.size(),

@@ -70,7 +70,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const ResidueConditional& c = marginal.conditional(dim == 0 ? nullptr : poles.point(i));
     if (c.valid && -std::expm1(c.log_p_lo - c.log_p_up) > 1e-9) {
-      share[i] = weight[static_cast<Eigen::Index>(i)] * std::exp(-0.5 * c.log_p_sampled);
+      share[i] = std::exp(std::log(weight[static_cast<Eigen::Index>(i)]) - 0.5 * c.log_p_sampled);  // P̃ may underflow
       share_sum += share[i];
       corrected += 1.0;
     }
@@ -94,7 +94,6 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     } else {
       // P̂ = h/m (unbiased for any m ≥ 1); the first draw inside the box is an exact draw of the
       // truncated t. m_i from the budget shares above, at most kMaxBoxDraws.
-      const double p_sampled = std::exp(c.log_p_sampled);
       const double wanted = share_sum > 0.0 ? budget * share[i] / share_sum : 1.0;
       const long m = std::clamp(static_cast<long>(std::ceil(std::min(wanted, 1e12))), 1L, kMaxBoxDraws);
       long hits = 0;
@@ -103,12 +102,13 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
         if (in_residue_box(x, lo, hi) && hits++ == 0) r = std::move(x);
       }
       const double md = static_cast<double>(m), p_hat = static_cast<double>(hits) / md;
-      rho[ii] = p_hat / p_sampled;
+      rho[ii] = hits == 0 ? 0.0 : std::exp(std::log(p_hat) - c.log_p_sampled);
       // Var(P̂) = P(1 − P)/m with P estimated by min(p̃, P̃), p̃ = (h + 1)/(m + 2): h = 0 or h = m does
-      // not claim zero variance, and P_box ≤ P̃ (the slab bound, docs/method.md) caps it.
-      const double p_tilde = std::min((hits + 1.0) / (md + 2.0), p_sampled);
-      const double scaled = weight[ii] / p_sampled;
-      correction_variance += scaled * scaled * p_tilde * (1.0 - p_tilde) / md;
+      // not claim zero variance, and P_box ≤ P̃ (the slab bound, docs/method.md) caps it. In logs: P̃ may
+      // underflow where the t lies far outside the box (such points carry no weight).
+      const double log_p_tilde = std::min(std::log((hits + 1.0) / (md + 2.0)), c.log_p_sampled);
+      correction_variance += std::exp(2.0 * (std::log(weight[ii]) - c.log_p_sampled) + log_p_tilde) *
+                             -std::expm1(log_p_tilde) / md;
       if (hits == 0) r = c.mean.cwiseMax(lo).cwiseMin(hi);  // weight 0: any admissible θ will do
     }
     assemble_theta(order, psi, r, theta);

@@ -19,6 +19,7 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
     : order_(order),
       omega_(data.omega()),
       omega2_(omega_.square()),
+      points_(omega_, data.y),
       k_(real_data_count(count, data.size())),
       p_(residue_count(order)),
       tail_(k_ - p_) {
@@ -33,6 +34,8 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
   residue_box(order, ranges, lo_, hi_);
   a_.resize(2 * n, p_);
   g_.resize(p_);
+  gram_work_.resize(residue_gram_work_size(p_));
+  width_ = hi_ - lo_;
   slab_lo_.resize(p_);
   slab_hi_.resize(p_);
   // Nodes of y = ln(W/ν), W ~ χ²_ν: density ∝ exp(ν/2 · (y − e^y)), sd ≈ √(2/ν); 33 trapezoid nodes over
@@ -83,16 +86,12 @@ void ResidueMarginal::fill_basis(const double* poles, Eigen::MatrixXd& a) const 
 }
 
 const ResidueConditional& ResidueMarginal::conditional(const double* poles) const {
-  fill_basis(poles, a_);
   ResidueConditional& c = c_;
   c.valid = false;
   c.log_marginal = -std::numeric_limits<double>::infinity();
-  // M = AᵀA and g = Aᵀb by column dot products (p ≤ ~10 columns: cheaper than a blocked product).
+  // M = AᵀA and g = Aᵀb in one fused pass over the points (inference/residue_gram.hpp).
   c.m.resize(p_, p_);
-  for (Eigen::Index j = 0; j < p_; ++j) {
-    g_[j] = a_.col(j).dot(b_);
-    for (Eigen::Index k = 0; k <= j; ++k) c.m(j, k) = c.m(k, j) = a_.col(j).dot(a_.col(k));
-  }
+  residue_gram(points_, order_.q(), order_.s(), poles, gram_work_.data(), c.m.data(), g_.data());
   const Eigen::VectorXd& g = g_;
   // Jacobi scaling: the columns differ by orders of magnitude (1 for G∞, ~1/λ for the poles).
   c.scale = c.m.diagonal().cwiseSqrt().cwiseInverse();
@@ -103,37 +102,49 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   const auto& llt = llt_;
   c.chol = llt.matrixL();
   if (!(c.chol.diagonal().array() > 0.0).all()) return c;
-  c.mean = c.scale.asDiagonal() * llt.solve(c.scale.asDiagonal() * g);
+  mean_scaled_ = c.scale.cwiseProduct(g);
+  llt.solveInPlace(mean_scaled_);
+  c.mean = c.scale.cwiseProduct(mean_scaled_);
   // S(r̂) = |b|² − 2gᵀr̂ + r̂ᵀMr̂ is second-order in the error of r̂ (the form |b|² − gᵀr̂ is first-order).
-  c.s_min = b_norm2_ - 2.0 * g.dot(c.mean) + c.mean.dot(c.m * c.mean);
-  if (!(c.s_min > 1e-12 * b_norm2_)) c.s_min = (b_ - a_ * c.mean).squaredNorm();  // cancellation: recompute
+  v_.noalias() = c.m * c.mean;
+  c.s_min = b_norm2_ - 2.0 * g.dot(c.mean) + c.mean.dot(v_);
+  if (!(c.s_min > 1e-12 * b_norm2_)) {  // cancellation: recompute from the stored basis
+    fill_basis(poles, a_);
+    c.s_min = (b_ - a_ * c.mean).squaredNorm();
+  }
   c.s_min = std::max(c.s_min, 1e-300);
   const double log_det_m = 2.0 * (c.chol.diagonal().array().log().sum() - c.scale.array().log().sum());
 
   // Coordinate marginals: t_ν with scale s_k = √(S_min/ν · (M⁻¹)_kk), (M⁻¹)_kk = D_k² Σ_i (L̃⁻¹)_ik².
-  inv_chol_ = llt.matrixL().solve(Eigen::MatrixXd::Identity(p_, p_));
+  inv_chol_.setIdentity(p_, p_);
+  llt.matrixL().solveInPlace(inv_chol_);
   const auto tail = [&](double z) { return tail_.upper(z); };
-  // P(−z_lo ≤ T ≤ z_hi) and its complement, from upper tails only (no cancellation against 1 when the
-  // centre lies outside the interval).
-  const auto interval = [&](double z_lo, double z_hi, double& inside, double& outside) {
+  // P(−z_lo ≤ T ≤ z_hi), its complement and ln of an upper bound of it, from upper tails only (no
+  // cancellation against 1 when the centre lies outside the interval). Where the interval lies beyond
+  // the resolvable tail (inside = 0 in double), the bound stays finite (StudentTail::log_upper_bound): the
+  // sampled likelihood then still falls with the distance of r̂ from the box instead of meeting a floor.
+  const auto interval = [&](double z_lo, double z_hi, double& inside, double& outside, double& log_inside) {
     if (z_lo < 0.0) {
       inside = tail(-z_lo) - tail(z_hi);
       outside = 1.0 - inside;
+      log_inside = inside > 0.0 ? std::log(inside) : tail_.log_upper_bound(-z_lo);
     } else if (z_hi < 0.0) {
       inside = tail(-z_hi) - tail(z_lo);
       outside = 1.0 - inside;
+      log_inside = inside > 0.0 ? std::log(inside) : tail_.log_upper_bound(-z_hi);
     } else {
       outside = tail(z_lo) + tail(z_hi);
       inside = 1.0 - outside;
+      log_inside = std::log(std::max(inside, 1e-300));
     }
   };
-  double sum_outside = 0.0, min_inside = 1.0;
+  double sum_outside = 0.0, log_min_inside = 0.0;
   for (Eigen::Index k = 0; k < p_; ++k) {
     const double s = c.scale[k] * inv_chol_.col(k).norm() * std::sqrt(c.s_min / c.nu);
-    double inside, outside;
-    interval((c.mean[k] - lo_[k]) / s, (hi_[k] - c.mean[k]) / s, inside, outside);
+    double inside, outside, log_inside;
+    interval((c.mean[k] - lo_[k]) / s, (hi_[k] - c.mean[k]) / s, inside, outside, log_inside);
     sum_outside += outside;
-    min_inside = std::min(min_inside, inside);
+    log_min_inside = std::min(log_min_inside, log_inside);
   }
   // Directions v_j = W⁻¹e_j, e_j the eigenvectors of W⁻¹M⁻¹W⁻¹ (the covariance in box units, W =
   // diag(box widths)), are M⁻¹-orthogonal, so the projections v_jᵀr are uncorrelated univariate t's of scale
@@ -143,16 +154,20 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   // poles) and is what the sampler uses, clamped to [P_lo, P_up].
   int cut = 0;  // directions whose slab holds less than 1 − 1e-12 of the t
   double log_product = 0.0;
-  if (p_ > 1) {
-    const Eigen::ArrayXd width = hi_ - lo_;
-    box_cov_ = inv_chol_ * (c.scale.array() / width).matrix().asDiagonal();  // L̃⁻¹ D W⁻¹
-    eigen_.compute(box_cov_.transpose() * box_cov_);
+  // When no coordinate marginal reaches a face (every tail beyond the negligible quantile is exactly 0),
+  // P_lo = P_up = 1 and the clamp below gives P̃ = 1 whatever the slabs say: no eigendecomposition.
+  if (p_ > 1 && sum_outside > 0.0) {
+    const Eigen::ArrayXd& width = width_;
+    box_cov_.noalias() = inv_chol_ * (c.scale.array() / width).matrix().asDiagonal();  // L̃⁻¹ D W⁻¹
+    scaled_.noalias() = box_cov_.transpose() * box_cov_;
+    eigen_.compute(scaled_);
     for (Eigen::Index j = 0; j < p_; ++j) {
       const double var = eigen_.eigenvalues()[j] * c.s_min / c.nu;
       slab_lo_[j] = -std::numeric_limits<double>::infinity();
       slab_hi_[j] = std::numeric_limits<double>::infinity();
       if (!(var > 0.0) || !std::isfinite(var)) continue;
-      const Eigen::VectorXd v = eigen_.eigenvectors().col(j).cwiseQuotient(width.matrix());
+      v_ = eigen_.eigenvectors().col(j).cwiseQuotient(width.matrix());
+      const Eigen::VectorXd& v = v_;
       double lo_v = 0.0, hi_v = 0.0;
       for (Eigen::Index k = 0; k < p_; ++k) {
         lo_v += std::min(v[k] * lo_[k], v[k] * hi_[k]);
@@ -161,16 +176,14 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
       const double s = std::sqrt(var), centre = v.dot(c.mean);
       slab_lo_[j] = (lo_v - centre) / s;
       slab_hi_[j] = (hi_v - centre) / s;
-      double inside, outside;
-      interval(-slab_lo_[j], slab_hi_[j], inside, outside);
-      min_inside = std::min(min_inside, inside);
+      double inside, outside, log_inside;
+      interval(-slab_lo_[j], slab_hi_[j], inside, outside, log_inside);
+      log_min_inside = std::min(log_min_inside, log_inside);
       log_product += outside < 0.5 ? std::log1p(-outside) : std::log(std::max(inside, 1e-300));
       if (outside > 1e-12) ++cut;
     }
   }
-  // P_up is floored at 1e-300 (keeps ln L finite where the t lies far outside the box); a floor only
-  // raises the upper bound, and such points have P_lo = 0, so they count fully in the truncation check.
-  c.log_p_up = std::log(std::max(min_inside, 1e-300));
+  c.log_p_up = log_min_inside;
   c.log_p_lo = sum_outside < 1.0 ? std::log1p(-sum_outside) : -std::numeric_limits<double>::infinity();
   // P̃: with one cut direction the product is that slab's exact t probability; with several the slabs
   // share the t's scale variable W ~ χ²_ν, so P̃ = E_W[Π_j P_j | W] (Gaussian slabs given W; quadrature in

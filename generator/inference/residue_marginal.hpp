@@ -20,6 +20,7 @@
 #include "data/measurement.hpp"
 #include "inference/likelihood.hpp"
 #include "inference/priors.hpp"
+#include "inference/residue_gram.hpp"
 #include "inference/student_t.hpp"
 #include "model/order.hpp"
 
@@ -67,6 +68,8 @@ class ResidueMarginal {
  private:
   Order order_;
   Eigen::ArrayXd omega_, omega2_;
+  GramPoints points_;
+  mutable std::vector<double> gram_work_;
   Eigen::VectorXd b_;
   double b_norm2_;
   int k_, p_;
@@ -74,7 +77,8 @@ class ResidueMarginal {
   double constant_;    ///< ln Γ(ν/2) − ln 2 − (ν/2) ln π − ln V_r
   Eigen::VectorXd lo_, hi_;
   mutable Eigen::MatrixXd a_, inv_chol_, scaled_;
-  mutable Eigen::VectorXd g_;
+  mutable Eigen::VectorXd g_, mean_scaled_, v_;
+  Eigen::ArrayXd width_;
   mutable Eigen::LLT<Eigen::MatrixXd> llt_;
   /// ln E_W[Π_j P(slab_j | W)] over the cut slabs (slab_lo_/slab_hi_ in units of the t scale).
   double log_slab_mixture() const;

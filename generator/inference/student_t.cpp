@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 #include <algorithm>
@@ -43,7 +44,10 @@ double student_t_negligible_tail(double nu) {
   return boost::math::quantile(boost::math::complement(StudentT(nu), 1e-16));
 }
 
-StudentTail::StudentTail(double nu) : nu_(nu), z_neg_(student_t_negligible_tail(nu)) {
+StudentTail::StudentTail(double nu)
+    : nu_(nu),
+      z_neg_(student_t_negligible_tail(nu)),
+      log_density_constant_(std::lgamma(0.5 * (nu + 1.0)) - std::lgamma(0.5 * nu) - 0.5 * std::log(nu * boost::math::constants::pi<double>())) {
   if (z_neg_ > 64.0) return;
   const StudentT t(nu);
   const int nodes = static_cast<int>(std::ceil(z_neg_ / step_)) + 2;
@@ -65,6 +69,12 @@ double StudentTail::upper(double z) const {
   const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
   const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
   return std::exp(h00 * log_q_[i] + h10 * step_ * slope_[i] + h01 * log_q_[i + 1] + h11 * step_ * slope_[i + 1]);
+}
+
+double StudentTail::log_upper_bound(double z) const {
+  if (z < z_neg_ || !(nu_ > 1.0)) return std::log(upper(std::max(z, 0.0)));
+  const double log_f = log_density_constant_ - 0.5 * (nu_ + 1.0) * std::log1p(z * z / nu_);
+  return log_f + std::log((nu_ + z * z) / ((nu_ - 1.0) * z));
 }
 
 double chi_square_draw(double nu, Rng& rng) { return 2.0 * gamma_draw(0.5 * nu, rng); }

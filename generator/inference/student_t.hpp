@@ -29,10 +29,15 @@ class StudentTail {
  public:
   explicit StudentTail(double nu);
   double upper(double z) const;  ///< P(T > z), z ≥ 0
+  /// An upper bound of ln P(T > z) that stays finite where P underflows: ln of the exact tail below
+  /// z_neg, beyond it ln[f(z)(ν + z²)/((ν − 1) z)] (f the t density), which exceeds the tail by a factor
+  /// at most ν(1 + 1/z²)/(ν − 1) (integrate its derivative, −f ν(1 + 1/z²)/(ν − 1) ≤ −f).
+  double log_upper_bound(double z) const;
   double negligible() const { return z_neg_; }
 
  private:
   double nu_, z_neg_, step_ = 1.0 / 64.0;
+  double log_density_constant_;  ///< ln Γ((ν+1)/2) − ln Γ(ν/2) − ½ ln(νπ)
   std::vector<double> log_q_, slope_;
 };
 

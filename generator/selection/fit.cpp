@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <limits>
 #include <map>
 #include <memory>
@@ -40,6 +41,15 @@ Model order_model(const Measurement& data, const Order& order, const FitSettings
 }
 
 namespace {
+
+/// CPU time of the calling thread (POSIX; 0 where unavailable).
+double thread_cpu_seconds() {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+  timespec t{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0) return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+#endif
+  return 0.0;
+}
 
 NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round) {
   NestedSettings sampler = settings.sampler;
@@ -76,6 +86,7 @@ ModelResult run_poles(const Measurement& data, const Order& order, const FitSett
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
                       const NestedProgressFn& progress, int round) {
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   ModelResult result{Order(0, 0), {}, 0, 0.0, {}};
   if (settings.sampler_kind == SamplerKind::full) {
     result = run_full(data, order, settings, progress, round);
@@ -98,6 +109,7 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
     }
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.cpu_seconds = thread_cpu_seconds() - cpu_start;
   for (std::size_t i = 0; i < result.run.size(); ++i)
     fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
   result.parameters = summarize(result.run, order.parameter_names());

@@ -74,6 +74,7 @@ struct ModelResult {
   double truncation_correction_error = 0.0;
   double reweighted_ess_ratio = 1.0;
   double gibbs_weight = 0.0;
+  double cpu_seconds = 0.0;  ///< CPU time of the thread that ran it (for benchmarks on a loaded machine; not stored)
 };
 
 /// Posterior predictive band at the data frequencies: 2.5 %, 50 %, 97.5 % quantiles.

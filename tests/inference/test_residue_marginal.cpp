@@ -4,6 +4,7 @@
 // form of (1/V_r) ∫_box L dr against a direct Gauss-Legendre quadrature of the full likelihood over r.
 #include "inference/likelihood.hpp"
 #include "inference/pole_space.hpp"
+#include "inference/residue_gram.hpp"
 #include "inference/residue_marginal.hpp"
 #include "model/residue_basis.hpp"
 #include "synthetic_data.hpp"
@@ -12,6 +13,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using namespace admitgen;
@@ -67,6 +69,39 @@ TEST_CASE("residue marginal: basis columns equal model/residue_basis.hpp") {
     CHECK((a.col(k).head(n) - ref.re.col(k)).cwiseAbs().maxCoeff() <= 1e-12 * scale);
     CHECK((a.col(k).tail(n) - ref.im.col(k)).cwiseAbs().maxCoeff() <= 1e-12 * scale);
   }
+}
+
+TEST_CASE("residue gram: the fused pass equals AᵀA and Aᵀb from residue_basis.hpp (Q3S3 at 37, 43 and 8 points)") {
+  // Points 37 and 43 (5 and 3 lanes of padding in the last block of 8) and 8 (none); every order term.
+  const Order o(3, 3);
+  Eigen::VectorXd theta = Eigen::VectorXd::Zero(o.dim());
+  const double lambdas[] = {900.0, 52000.0, 7000.0};
+  for (int q = 0; q < 3; ++q) theta[Order::lambda(q)] = lambdas[q];
+  const double pairs[][2] = {{1500.0, 10000.0}, {300.0, -2500.0}, {9000.0, 300.0}};
+  for (int s = 0; s < 3; ++s) theta[o.alpha(s)] = pairs[s][0], theta[o.beta(s)] = pairs[s][1];
+  std::vector<double> poles;
+  for (int i : pole_indices(o)) poles.push_back(theta[i]);
+  for (const int points : {37, 43, 8}) {
+    const Measurement data = test::synthetic(Order(0, 0), Eigen::VectorXd::Constant(1, 0.3), points, 20.0, 6000.0, 0.01, 3);
+    const ResidueBasis basis = residue_basis(o, theta, data.omega());
+    const Eigen::MatrixXd m_ref = basis.re.transpose() * basis.re + basis.im.transpose() * basis.im;
+    const Eigen::VectorXd g_ref = basis.re.transpose() * data.y.real().matrix() + basis.im.transpose() * data.y.imag().matrix();
+    const GramPoints pts(data.omega(), data.y);
+    const int p = residue_count(o);
+    std::vector<double> work(residue_gram_work_size(p));
+    Eigen::MatrixXd m(p, p);
+    Eigen::VectorXd g(p);
+    residue_gram(pts, o.q(), o.s(), poles.data(), work.data(), m.data(), g.data());
+    // Sums of N products in another order: agreement to N·ε relative to Σ|products| (Cauchy-Schwarz bound
+    // √(M_jj M_kk) for M, |φ_j|·|b| for g).
+    const double tol = 4.0 * points * std::numeric_limits<double>::epsilon();
+    for (int j = 0; j < p; ++j) {
+      for (int k = 0; k < p; ++k)
+        CHECK(std::abs(m(j, k) - m_ref(j, k)) <= tol * std::sqrt(m_ref(j, j) * m_ref(k, k)));
+      CHECK(std::abs(g[j] - g_ref[j]) <= tol * std::sqrt(m_ref(j, j)) * std::sqrt(data.y.abs2().sum()));
+    }
+  }
+  MESSAGE("residue_gram runs with ", residue_gram_isa());
 }
 
 TEST_CASE("residue marginal: closed form equals quadrature over r (1 residue truncated, 2 residues inside)") {
