@@ -59,10 +59,22 @@ CONF
   exit 1
   ;;
 down)
+  pids=()
   for d in slurmd slurmctld; do
-    [ -f "$dir/$d.pid" ] && kill "$(cat "$dir/$d.pid")" 2>/dev/null || true
+    if [ -f "$dir/$d.pid" ]; then pids+=("$(cat "$dir/$d.pid")"); kill "${pids[-1]}" 2>/dev/null || true; fi
   done
-  if [ -f "$dir/munged.started" ] && [ -f /run/munge/munged.pid ]; then kill "$(cat /run/munge/munged.pid)" || true; fi
+  if [ -f "$dir/munged.started" ] && [ -f /run/munge/munged.pid ]; then
+    pids+=("$(cat /run/munge/munged.pid)"); kill "${pids[-1]}" 2>/dev/null || true
+  fi
+  # Wait (at most 20 s) until they have exited, so that a next cluster can take the ports.
+  for _ in $(seq 40); do
+    alive=0
+    for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && alive=1; done
+    [ $alive -eq 0 ] && exit 0
+    sleep 0.5
+  done
+  echo "slurm_cluster.sh: daemons still running after 20 s: ${pids[*]}" >&2
+  exit 1
   ;;
 *) echo "usage: slurm_cluster.sh up|down DIR" >&2; exit 2 ;;
 esac
