@@ -138,7 +138,7 @@ void setup_library_command(CLI::App& app, int& exit_code) {
 
   auto* merge = lib->add_subcommand("merge", "Assemble, emit and check every material; write the library's exports");
   merge->add_option("dir", o->dir, "Library folder")->required();
-  merge->add_option("--threads,-j", o->threads, "Worker threads for re-runs of orders that missed a mode (0 = all cores)")
+  merge->add_option("--threads,-j", o->threads, "Materials merged at once (0 = all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024))->capture_default_str();
   merge->add_option("--templates", o->templates, "Directory holding admitgen_boundary.h.in (default: built in)");
   merge->add_flag("--quiet,-q", o->quiet, "No progress or summary output");

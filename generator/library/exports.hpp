@@ -20,7 +20,7 @@ struct MaterialOutput {
   std::string name;
   codegen::Emission emission;
   std::string header;
-  ModelResult selected;
+  ModelResult selected{Order(0, 0), {}, 0, 0.0, {}};
   std::vector<std::string> warnings;
 };
 

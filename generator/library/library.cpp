@@ -117,10 +117,13 @@ void merge(const Library& library, const std::string& dir, const std::string& te
                                  "`admitgen library slurm {}` first",
                                  missing.size(), units.size(), missing.front(), missing.size() > 1 ? ", ..." : "", dir,
                                  dir));
-  std::vector<MaterialOutput> outputs;
-  for (std::size_t i = 0; i < library.materials.size(); ++i) {
+  // Materials in parallel, each writing only its own folder and output slot (their re-runs of missed modes
+  // then run on one thread each: results never depend on threads).
+  std::vector<MaterialOutput> outputs(library.materials.size());
+  std::vector<std::size_t> queue(library.materials.size());
+  for (std::size_t i = 0; i < queue.size(); ++i) queue[i] = i;
+  run_in_parallel(queue, threads, [&](std::size_t i) {
     const Material& m = library.materials[i];
-    progress.message(fmt::format("merging {}", m.name));
     const Measurement data = read_data(m);
     std::vector<ModelResult> first_round;
     for (const auto& u : units)
@@ -131,8 +134,9 @@ void merge(const Library& library, const std::string& dir, const std::string& te
         first_round.push_back(std::move(r.model));
       }
     FitSettings settings = m.fit;
-    settings.threads = threads;
-    const FitResult fit = complete_fit(data, settings, std::move(first_round), progress);
+    settings.threads = 1;
+    Progress quiet(false);
+    const FitResult fit = complete_fit(data, settings, std::move(first_round), quiet);
     const fs::path out = fs::path(dir) / "materials" / m.name;
     ensure_writable_directory(out.string());
     write_fit_directory(out.string(), data, m.read, settings, fit);
@@ -143,9 +147,10 @@ void merge(const Library& library, const std::string& dir, const std::string& te
     if (!emitted.safe()) throw InputError(emitted.refusal((out / header_name).string()));
     write_file_atomically((out / header_name).string(), emitted.header);
     write_file_atomically((out / "bands.json").string(), io::bands_text(emitted.emission));
-    outputs.push_back({m.name, std::move(emitted.emission), std::move(emitted.header), fit.models[fit.selected],
-                       fit.warnings});
-  }
+    outputs[i] = {m.name, std::move(emitted.emission), std::move(emitted.header), fit.models[fit.selected], fit.warnings};
+    progress.message(fmt::format("merged {} ({})", m.name, fit.models[fit.selected].order.name()));
+  });
+  progress.finish();
   write_library_files(library.name, dir, outputs);
 }
 

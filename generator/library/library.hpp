@@ -77,7 +77,8 @@ std::size_t run_units(const Library& library, const std::vector<WorkUnit>& units
 /// completes each fit, and writes DIR/materials/NAME/ (fit.json, posterior files, report.html, NAME.h,
 /// bands.json) and the library files (NAME.h of all materials, bands.json, bands.csv, report.html; see
 /// library/exports.hpp). A material whose header fails admitgen check stops the merge before the library
-/// files are written. `threads` runs the re-runs of missed modes.
+/// files are written. `threads` merges that many materials at once (0 = all cores); the outputs do not
+/// depend on it.
 void merge(const Library& library, const std::string& dir, const std::string& template_text, int threads,
            Progress& progress);
 

@@ -106,7 +106,7 @@ TEST_CASE("library: the merge writes what fit and emit write, byte for byte, wha
     CHECK(read_text(dir + "/lib1/" + file) == read_text(dir + "/lib2/" + file));
 }
 
-TEST_CASE("library: editing one data file re-runs only that material's units; emit settings re-run none") {
+TEST_CASE("library: editing one data file re-runs only that material's units, emit settings none") {
   const std::string dir = scratch_dir("library_incremental");
   const std::string manifest = make_library(dir);
   const std::string out = dir + "/lib";
