@@ -32,8 +32,7 @@ const std::set<std::string> kMaterialKeys{"name", "data"};
 const std::map<std::string, std::string> kRefusedKeys{
     {"threads", "the thread count is a property of the run: `admitgen library run DIR --threads N`"},
     {"name", "a material's C prefix is LIBRARY_MATERIAL (the library's name and the material's)"},
-    {"out", "outputs go to the library's folder"},
-    {"priors-origin", ""}};
+    {"out", "outputs go to the library's folder"}};
 
 /// One manifest entry: a key, its value as command-line arguments, and where it is.
 struct Entry {

@@ -11,24 +11,49 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <utility>
 
 namespace admitgen::library {
 namespace fs = std::filesystem;
 namespace {
 
-/// Runs `command` through the shell; returns its stdout (stderr merged). Throws InputError on failure.
-std::string run(const std::string& command) {
+/// Runs `command` through the shell; its output (stderr merged) and exit status.
+std::pair<std::string, int> run_status(const std::string& command) {
   FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (!pipe) throw InputError(fmt::format("cannot run '{}'", command));
   std::string out;
   std::array<char, 4096> buffer{};
   while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-  const int status = pclose(pipe);
+  return {out, pclose(pipe)};
+}
+
+/// Runs `command` through the shell; returns its stdout (stderr merged). Throws InputError on failure.
+std::string run(const std::string& command) {
+  auto [out, status] = run_status(command);
   if (status != 0)
     throw InputError(fmt::format("'{}' failed (exit status {}): {}", command,
                                  WIFEXITED(status) ? WEXITSTATUS(status) : status, out));
   while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
   return out.substr(0, out.find(';'));  // --parsable: "JOBID" or "JOBID;CLUSTER"
+}
+
+/// Refuses a new submission while a job of an earlier one is still queued or running (its pending tasks
+/// would run units a second time): the job ids come from DIR/slurm/submitted-N.txt.
+void refuse_while_queued(const fs::path& slurm) {
+  for (int n = 1; fs::exists(slurm / fmt::format("submitted-{}.txt", n)); ++n) {
+    std::ifstream in(slurm / fmt::format("submitted-{}.txt", n));
+    std::string kind, id;
+    while (in >> kind && std::getline(in, id)) {
+      id.erase(0, id.find_first_not_of(' '));
+      if ((kind != "array" && kind != "merge") || id.empty()) continue;
+      const auto [out, status] = run_status("squeue -h -o %i -j " + id);
+      if (status == 0 && out.find_first_not_of(" \n") != std::string::npos)
+        throw InputError(fmt::format("the {} job {} of submission {} is still queued or running: wait for it, or "
+                                     "scancel {} and submit again (only units without a result are submitted)",
+                                     kind, id, n, id));
+    }
+  }
 }
 
 /// The next free submission number under DIR/slurm (submissions are kept, numbered from 1).
@@ -50,6 +75,7 @@ SlurmSubmission submit_to_slurm(const std::vector<WorkUnit>& units, const std::s
   const fs::path root = fs::absolute(dir);
   const fs::path slurm = root / "slurm";
   ensure_writable_directory((slurm / "logs").string());
+  if (!o.dry_run) refuse_while_queued(slurm);
   const int n = next_submission(slurm);
   SlurmSubmission s;
   std::string list;

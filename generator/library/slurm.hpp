@@ -29,7 +29,8 @@ struct SlurmSubmission {
 };
 
 /// The scripts (units and merge) for the units not up to date, submitted unless a dry run. Throws
-/// InputError if sbatch fails, with its output.
+/// InputError if sbatch fails, with its output, or while a job of an earlier submission of `dir` is still
+/// queued or running (its tasks would run units a second time).
 SlurmSubmission submit_to_slurm(const std::vector<WorkUnit>& units, const std::string& dir, const SlurmOptions& options);
 
 /// Single-quoted for a POSIX shell.

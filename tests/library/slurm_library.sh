@@ -45,6 +45,11 @@ merge1=$("$admitgen" library slurm -q --sbatch=--hold "$work/slurm")
 array1=$(sed -n 's/^array //p' "$work/slurm/slurm/submitted-1.txt")
 [ "$(wc -l <"$work/slurm/slurm/units-1.list")" -eq 12 ] || { echo "FAIL: first submission should hold 12 units"; exit 1; }
 scancel "${array1}_5"
+# While the first submission is queued, a second one is refused (its held tasks would run units twice).
+if "$admitgen" library slurm -q "$work/slurm" >"$work/refused.txt" 2>&1; then
+  echo "FAIL: a second submission was accepted while the first was queued"; exit 1
+fi
+grep -q "still queued or running" "$work/refused.txt" || { echo "FAIL: refusal message"; cat "$work/refused.txt"; exit 1; }
 scontrol release "$array1"
 state=$(wait_job "$array1")
 echo "array job $array1 (task 5 cancelled) left the queue"
