@@ -4,6 +4,7 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/version.hpp"
+#include "io/bands_file.hpp"
 #include "plot/figure.hpp"
 #include "plot/format.hpp"
 #include "report/page.hpp"
@@ -23,23 +24,26 @@ std::string upper(std::string s) {
 }
 
 /// The band sets of the exports, by name, computed from the emitted (continuous) model.
-struct BandSet {
-  const char* name;
-  std::vector<codegen::BandAbsorption> bands;
-};
-
-std::vector<BandSet> band_sets(const codegen::Emission& e) {
+io::MaterialBands band_sets(const MaterialOutput& m) {
+  const codegen::Emission& e = m.emission;
   const double lo = *std::min_element(e.data_f_hz.begin(), e.data_f_hz.end());
   const double hi = *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end());
   const auto& order = e.surface.order;
   const auto& theta = e.surface.theta;
-  return {{"octave", e.octave},
-          {"third_octave", e.third_octave},
-          {"steam_audio", codegen::band_absorption(order, theta, steam_audio_bands(), lo, hi)},
-          {"four_band", codegen::band_absorption(order, theta, four_bands(), lo, hi)}};
+  return {m.name,
+          order.name(),
+          e.input_sha256,
+          {{"octave", e.octave},
+           {"third_octave", e.third_octave},
+           {"steam_audio", codegen::band_absorption(order, theta, steam_audio_bands(), lo, hi)},
+           {"four_band", codegen::band_absorption(order, theta, four_bands(), lo, hi)}}};
 }
 
-std::string number(double v) { return fmt::format("{:.6g}", v); }
+std::vector<io::MaterialBands> band_sets(const std::vector<MaterialOutput>& materials) {
+  std::vector<io::MaterialBands> out;
+  for (const auto& m : materials) out.push_back(band_sets(m));
+  return out;
+}
 
 }  // namespace
 
@@ -97,46 +101,6 @@ std::string library_header(const std::string& name, const std::vector<MaterialOu
   return out;
 }
 
-std::string library_bands_json(const std::string& name, const std::vector<MaterialOutput>& materials) {
-  std::string out = fmt::format("{{\n  \"schema\": \"admitgen.library-bands/1\",\n  \"version\": \"{}\",\n"
-                                "  \"library\": \"{}\",\n  \"materials\": [",
-                                kVersion, name);
-  for (std::size_t i = 0; i < materials.size(); ++i) {
-    const auto& m = materials[i];
-    out += fmt::format("{}\n    {{\n      \"name\": \"{}\",\n      \"order\": \"{}\"", i ? "," : "", m.name,
-                       m.emission.surface.order.name());
-    for (const auto& set : band_sets(m.emission)) {
-      std::vector<std::string> c, lo, hi, an, ar, in;
-      for (const auto& b : set.bands) {
-        c.push_back(number(b.center_hz));
-        lo.push_back(number(b.lo_hz));
-        hi.push_back(number(b.hi_hz));
-        an.push_back(number(b.alpha_normal));
-        ar.push_back(number(b.alpha_random));
-        in.push_back(b.in_data ? "true" : "false");
-      }
-      out += fmt::format(
-          ",\n      \"{}\": {{\n        \"center_hz\": [{}],\n        \"lo_hz\": [{}],\n        \"hi_hz\": [{}],\n"
-          "        \"alpha_normal\": [{}],\n        \"alpha_random\": [{}],\n        \"in_data\": [{}]\n      }}",
-          set.name, fmt::join(c, ", "), fmt::join(lo, ", "), fmt::join(hi, ", "), fmt::join(an, ", "),
-          fmt::join(ar, ", "), fmt::join(in, ", "));
-    }
-    out += "\n    }";
-  }
-  out += "\n  ]\n}\n";
-  return out;
-}
-
-std::string library_bands_csv(const std::vector<MaterialOutput>& materials) {
-  std::string out = "material,band_set,center_hz,lo_hz,hi_hz,alpha_normal,alpha_random,in_data\n";
-  for (const auto& m : materials)
-    for (const auto& set : band_sets(m.emission))
-      for (const auto& b : set.bands)
-        out += fmt::format("{},{},{},{},{},{},{},{}\n", m.name, set.name, number(b.center_hz), number(b.lo_hz),
-                           number(b.hi_hz), number(b.alpha_normal), number(b.alpha_random), b.in_data ? 1 : 0);
-  return out;
-}
-
 std::string library_report(const std::string& name, const std::vector<MaterialOutput>& materials) {
   const char* tones[] = {"c1", "c2", "c3", "c4"};
   plot::Figure all("fig-library", "Random-incidence absorption of every material, one-third-octave bands");
@@ -191,8 +155,9 @@ void write_library_files(const std::string& name, const std::string& dir, const 
   namespace fs = std::filesystem;
   // Everything computed before the first file is written.
   const std::string header = library_header(name, materials);
-  const std::string json = library_bands_json(name, materials);
-  const std::string csv = library_bands_csv(materials);
+  const auto bands = band_sets(materials);
+  const std::string json = io::library_bands_text(name, bands);
+  const std::string csv = io::library_bands_csv(bands);
   const std::string html = library_report(name, materials);
   write_file_atomically((fs::path(dir) / (name + ".h")).string(), header);
   write_file_atomically((fs::path(dir) / "bands.json").string(), json);

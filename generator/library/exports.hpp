@@ -34,11 +34,6 @@ std::vector<codegen::BandEdges> four_bands();
 /// table NAME_models[material][rate] (all materials share one format and one rate list; the manifest reader
 /// ensures it).
 std::string library_header(const std::string& name, const std::vector<MaterialOutput>& materials);
-/// Band absorption of every material, schema "admitgen.library-bands/1" (docs/library.md).
-std::string library_bands_json(const std::string& name, const std::vector<MaterialOutput>& materials);
-/// The same as CSV, one row per material and band: material,band_set,center_hz,lo_hz,hi_hz,alpha_normal,
-/// alpha_random,in_data.
-std::string library_bands_csv(const std::vector<MaterialOutput>& materials);
 /// One self-contained HTML page: every material's absorption and fit quality side by side.
 std::string library_report(const std::string& name, const std::vector<MaterialOutput>& materials);
 
