@@ -33,18 +33,31 @@ std::string default_name(const std::string& out) {
 
 void setup_emit_command(CLI::App& app, int& exit_code) {
   auto cmd = std::make_shared<EmitCommand>();
-  codegen::EmitSettings& s = cmd->settings;
   auto* sub = app.add_subcommand("emit", "Generate the causal C header (recursive convolution) of a fit for the C99 runtime");
   sub->footer(
       "Example:\n  admitgen emit out/fit.json --fs 48000 --fs 96000 --format q31 --name wall --out wall.h\n"
       "The header holds one model per rate (exact poles, numerators refitted at the data frequencies for that\n"
       "rate), the band absorption tables, and a machine-readable block for admitgen check.");
   sub->add_option("fit", cmd->fit, "fit.json written by admitgen fit")->required()->check(CLI::ExistingFile);
+  add_emit_options(*sub, cmd->settings);
+  sub->add_option("--out,-o", cmd->out, "Header to write")->required();
+  sub->add_option("--bands-json", cmd->bands_json, "Also write the band absorption (octave, 1/3 octave) as JSON");
+  sub->add_option("--golden", cmd->golden, "Also write bit-exact golden vectors of the first rate (q31/q15)");
+  sub->add_option("--golden-seed", cmd->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
+  sub->add_option("--templates", cmd->templates, "Directory holding admitgen_boundary.h.in (default: the template built into admitgen)");
+  sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
+  sub->add_flag("--allow-unsafe", cmd->allow_unsafe,
+                "Write the header even when it fails admitgen check (non-causal, unstable, non-passive, overflow, "
+                "limit cycle); each failure is printed as a warning");
+  sub->callback([cmd, &exit_code] { exit_code = run_emit_command(*cmd); });
+}
+
+void add_emit_options(CLI::App& app, codegen::EmitSettings& s) {
+  CLI::App* sub = &app;
   sub->add_option("--fs", s.fs_hz, "Sample rate in Hz (repeatable; whole Hz)")->required();
   add_parsed_option(*sub, "--format", s.format, codegen::parse_format, "Coefficient and data format")
       ->required()->check(CLI::IsMember({"f32", "q31", "q15"}));
   sub->add_option("--name", s.name, "C identifier prefix of the emitted tables (default: output file stem)");
-  sub->add_option("--out,-o", cmd->out, "Header to write")->required();
   sub->add_option("--order", s.order, "Emit this order of the fit (e.g. Q0S2) instead of the selected one");
   add_parsed_option(*sub, "--estimate", s.estimate, parse_estimate,
                     "Parameters to emit: passive (best sample's poles, residues refitted under Re G >= 0; certified), "
@@ -53,18 +66,9 @@ void setup_emit_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"passive", "mean", "max_likelihood"}))->default_str(estimate_name(s.estimate));
   sub->add_option("--fir-taps", s.fir_taps, "FIR taps of the refit (0 = fewest reaching 1e-5 relative error)")
       ->check(CLI::Range(0, 8))->capture_default_str();
-  sub->add_option("--bands-json", cmd->bands_json, "Also write the band absorption (octave, 1/3 octave) as JSON");
-  sub->add_option("--golden", cmd->golden, "Also write bit-exact golden vectors of the first rate (q31/q15)");
-  sub->add_option("--golden-seed", cmd->golden_seed, "Seed of the golden vectors' noise segment")->capture_default_str();
-  sub->add_option("--templates", cmd->templates, "Directory holding admitgen_boundary.h.in (default: the template built into admitgen)");
-  sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
   add_clearing_flag(*sub, "--no-passivity-enforcement", s.enforce_passivity,
                     "Experts: emit the chosen estimate as fitted, with a plain least-squares refit (no passivity "
                     "enforcement); a non-passive result is then refused unless --allow-unsafe is given too");
-  sub->add_flag("--allow-unsafe", cmd->allow_unsafe,
-                "Write the header even when it fails admitgen check (non-causal, unstable, non-passive, overflow, "
-                "limit cycle); each failure is printed as a warning");
-  sub->callback([cmd, &exit_code] { exit_code = run_emit_command(*cmd); });
 }
 
 int run_emit_command(const EmitCommand& o) {

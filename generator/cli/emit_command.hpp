@@ -29,6 +29,8 @@ struct EmitCommand {
 };
 
 void setup_emit_command(CLI::App& app, int& exit_code);
+/// Binds the header settings of `emit` (not its files): `emit` and the library manifest read the same options.
+void add_emit_options(CLI::App& app, codegen::EmitSettings& settings);
 int run_emit_command(const EmitCommand& command);
 
 }  // namespace admitgen::cli

@@ -7,13 +7,10 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/evidence.hpp"
-#include "io/fit_file.hpp"
-#include "io/posterior_export.hpp"
+#include "library/fit_directory.hpp"
 #include "io/priors_file.hpp"
-#include "report/fit_report.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/fit.hpp"
-#include "selection/fit_record.hpp"
 #include "selection/goodness_of_fit.hpp"
 
 #include <fmt/core.h>
@@ -69,7 +66,6 @@ class CreatedDirectories {
 
 void setup_fit_command(CLI::App& app, int& exit_code) {
   auto cmd = std::make_shared<FitCommand>();
-  FitSettings& s = cmd->settings;
   auto* sub = app.add_subcommand("fit", "Bayesian order selection and parameter estimation of a multipole admittance");
   sub->footer(
       "Example:\n  admitgen fit samples/basotect_tuberlin/rect_5cm.csv --columns f,_,_,_,_,re,im,_ "
@@ -80,7 +76,16 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
       "predictive.csv (the data with the posterior median and 95 % band).");
   sub->add_option("data", cmd->data, "Measured data (CSV or whitespace; see --columns, --quantity)")->required();
   sub->add_option("--out,-o", cmd->out, "Output directory (created if missing)")->required();
-  add_data_options(*sub, cmd->read);
+  add_fit_options(*sub, cmd->read, cmd->settings);
+  sub->add_flag("--quiet,-q", cmd->quiet, "No progress or summary output");
+  sub->add_flag("--cost-only", cmd->cost_only,
+                "Read the data, print the cost estimate (printed before every fit) and stop: nothing is written");
+  sub->callback([cmd, &exit_code] { exit_code = run_fit_command(*cmd); });
+}
+
+void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
+  CLI::App* sub = &app;
+  add_data_options(*sub, read);
   sub->add_option("--qmax", s.qmax, "Largest number of real poles Q")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
   sub->add_option("--smax", s.smax, "Largest number of complex pole pairs S")->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
   sub->add_option("--live", s.sampler.live, "Live points of nested sampling")->check(CLI::Range(10, 100000))->capture_default_str();
@@ -118,10 +123,6 @@ void setup_fit_command(CLI::App& app, int& exit_code) {
                     "analytically (falls back to full per order where the residue box cannot be corrected for; "
                     "fit.json says which ran)")
       ->check(CLI::IsMember({"poles", "full"}))->default_str(s.sampler_kind == SamplerKind::full ? "full" : "poles");
-  sub->add_flag("--quiet,-q", cmd->quiet, "No progress or summary output");
-  sub->add_flag("--cost-only", cmd->cost_only,
-                "Read the data, print the cost estimate (printed before every fit) and stop: nothing is written");
-  sub->callback([cmd, &exit_code] { exit_code = run_fit_command(*cmd); });
 }
 
 int run_fit_command(const FitCommand& o) {
@@ -137,11 +138,8 @@ int run_fit_command(const FitCommand& o) {
                                data.f_hz[data.size() - 1], settings.qmax, settings.smax));
   const FitResult fit = run_fit(data, settings, progress);
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
-  FitRecord record = fit_record(data, read, settings, fit);
-  record.posterior = write_posterior_export(o.out, data, settings, fit);  // samples, covariance, bands as CSV
-  write_file_atomically(path, io::fit_text(record));
+  const FitRecord record = library::write_fit_directory(o.out, data, read, settings, fit);
   created.keep();
-  report::write_fit_report(o.out, record, data);
   if (!o.quiet) {
     print_summary(fit, data);
     for (const auto& w : *record.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));

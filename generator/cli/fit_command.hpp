@@ -24,6 +24,9 @@ struct FitCommand {
 };
 
 void setup_fit_command(CLI::App& app, int& exit_code);
+/// Binds the reading options and the fit settings of `fit` (not its files nor --quiet/--cost-only):
+/// `fit` and the library manifest (library_command.hpp) read the same options through it.
+void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& settings);
 int run_fit_command(const FitCommand& command);
 
 }  // namespace admitgen::cli

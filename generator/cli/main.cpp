@@ -6,6 +6,7 @@
 #include "cli/diagnose_command.hpp"
 #include "cli/emit_command.hpp"
 #include "cli/fit_command.hpp"
+#include "cli/library_command.hpp"
 #include "cli/options.hpp"
 #include "cli/synth_command.hpp"
 #include "core/errors.hpp"
@@ -27,6 +28,7 @@ int main(int argc, char** argv) {
   admitgen::cli::setup_synth_command(app, exit_code);
   admitgen::cli::setup_diagnose_command(app, exit_code);
   admitgen::cli::setup_check_command(app, exit_code);
+  admitgen::cli::setup_library_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

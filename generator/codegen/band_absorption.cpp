@@ -26,13 +26,24 @@ std::vector<BandAbsorption> band_absorption(const Order& order, const Eigen::Vec
   ADMITGEN_ENSURE(fraction == 1 || fraction == 3, "band fraction {}", fraction);
   const double ratio = std::pow(10.0, 0.3 / fraction);  // base-10 band ratio G^{1/b}
   const int k_lo = fraction == 1 ? -5 : -16, k_hi = fraction == 1 ? 4 : 13;
+  std::vector<BandEdges> edges;
+  for (int k = k_lo; k <= k_hi; ++k) {
+    const double center = 1000.0 * std::pow(ratio, k);
+    edges.push_back({center, center / std::sqrt(ratio), center * std::sqrt(ratio)});
+  }
+  return band_absorption(order, theta, edges, data_f_min, data_f_max);
+}
+
+std::vector<BandAbsorption> band_absorption(const Order& order, const Eigen::VectorXd& theta,
+                                            const std::vector<BandEdges>& edges, double data_f_min, double data_f_max) {
   constexpr int kPoints = 32;
   std::vector<BandAbsorption> bands;
-  for (int k = k_lo; k <= k_hi; ++k) {
+  for (const BandEdges& e : edges) {
+    ADMITGEN_ENSURE(0.0 < e.lo_hz && e.lo_hz < e.hi_hz, "band edges {} {}", e.lo_hz, e.hi_hz);
     BandAbsorption b;
-    b.center_hz = 1000.0 * std::pow(ratio, k);
-    b.lo_hz = b.center_hz / std::sqrt(ratio);
-    b.hi_hz = b.center_hz * std::sqrt(ratio);
+    b.center_hz = e.center_hz;
+    b.lo_hz = e.lo_hz;
+    b.hi_hz = e.hi_hz;
     b.in_data = b.lo_hz >= data_f_min && b.hi_hz <= data_f_max;
     Eigen::ArrayXd omega(kPoints);
     for (int i = 0; i < kPoints; ++i)

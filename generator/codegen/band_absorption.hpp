@@ -30,6 +30,15 @@ struct BandAbsorption {
 double alpha_normal(std::complex<double> g);
 double alpha_random(std::complex<double> g);
 
+/// A band: its nominal centre and its edges [lo, hi] in Hz (0 < lo < hi).
+struct BandEdges {
+  double center_hz, lo_hz, hi_hz;
+};
+
+/// The mean absorption over each of `edges` (32 log-spaced frequencies between the edges, as above).
+std::vector<BandAbsorption> band_absorption(const Order& order, const Eigen::VectorXd& theta,
+                                            const std::vector<BandEdges>& edges, double data_f_min, double data_f_max);
+
 /// Octave (fraction 1: 31.5 Hz–16 kHz) or one-third-octave (fraction 3: 25 Hz–20 kHz) bands.
 std::vector<BandAbsorption> band_absorption(const Order& order, const Eigen::VectorXd& theta, int fraction,
                                             double data_f_min, double data_f_max);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <stdexcept>
 
 namespace admitgen {
 
@@ -260,12 +261,28 @@ void run_orders(const Measurement& data, const FitSettings& settings, const std:
 }  // namespace
 
 FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress) {
+  return complete_fit(data, settings, run_first_round(data, settings, progress), progress);
+}
+
+std::vector<ModelResult> run_first_round(const Measurement& data, const FitSettings& settings, Progress& progress) {
   const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
   std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}, {}});
   std::vector<std::size_t> which(grid.size());
   std::iota(which.begin(), which.end(), std::size_t{0});
   run_orders(data, settings, grid, which, 0, results, progress);
+  return results;
+}
+
+FitResult complete_fit(const Measurement& data, const FitSettings& settings, std::vector<ModelResult> results,
+                       Progress& progress) {
+  const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
+  check_constrainable(data, settings);
+  if (results.size() != grid.size())
+    throw std::logic_error("complete_fit: one first-round result per order of the grid expected");
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (results[i].order != grid[i]) throw std::logic_error("complete_fit: results not in grid order");
+  std::vector<std::size_t> which;
   for (int round = 1; round <= settings.missed_mode_retries; ++round) {
     which.clear();
     for (const MissedMode& m : missed_modes(results)) which.push_back(m.order);

@@ -124,7 +124,20 @@ std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n);
 
 /// Runs the whole grid, selects, and adds each order's passive estimate (and a warning when the data
 /// themselves are not passive at some points). Throws InputError if the data cannot constrain the largest order.
+/// run_first_round, then complete_fit: the one definition of a fit, whether its orders run in this process
+/// or as separate work units (library/, docs/library.md).
 FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress& progress);
+
+/// The first round of a fit: fit_order(data, order, settings, ..., round 0) of every order of the grid, in
+/// grid order (order_grid). Each entry depends only on the data, the settings and its order, so it may be
+/// computed anywhere (a library work unit is exactly one entry). Throws InputError as run_fit.
+std::vector<ModelResult> run_first_round(const Measurement& data, const FitSettings& settings, Progress& progress);
+
+/// The rest of a fit from its first round (`first_round`: one result per order, grid order): the re-runs of
+/// orders that missed a mode (they depend on the other orders' results, so they run here), the selection,
+/// the passive estimates, the warnings and the predictive band.
+FitResult complete_fit(const Measurement& data, const FitSettings& settings, std::vector<ModelResult> first_round,
+                       Progress& progress);
 
 /// Predictive band from `draws` equal-weight posterior draws (deterministic given the seed).
 PredictiveBand predictive_band(const Measurement& data, const ModelResult& model, int draws, std::uint64_t seed);
