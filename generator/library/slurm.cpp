@@ -93,34 +93,36 @@ SlurmSubmission submit_to_slurm(const std::vector<WorkUnit>& units, const std::s
     write_file_atomically(s.unit_list, list);
     write_file_atomically(
         s.units_script,
-        fmt::format("#!/bin/sh\n"
-                    "# One work unit of the library in {} per array task (admitgen library slurm, submission {}).\n"
-                    "#SBATCH --job-name=admitgen-units\n"
-                    "#SBATCH --cpus-per-task=1\n"
-                    "#SBATCH --output={}/unit-%A_%a.out\n"
-                    "set -eu\n"
-                    "unit=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" {})\n"
-                    "exec {} library unit {} \"$unit\"\n",
+        fmt::format(R"SH(#!/bin/sh
+# One work unit of the library in {} per array task (admitgen library slurm, submission {}).
+#SBATCH --job-name=admitgen-units
+#SBATCH --cpus-per-task=1
+#SBATCH --output={}/unit-%A_%a.out
+set -eu
+unit=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {})
+exec {} library unit {} "$unit"
+)SH",
                     root.string(), n, (slurm / "logs").string(), shell_quote(s.unit_list), exe, where));
   }
   s.merge_script = (slurm / fmt::format("merge-{}.sh", n)).string();
   write_file_atomically(s.merge_script,
-                        fmt::format("#!/bin/sh\n"
-                                    "# The merge of the library in {} (admitgen library slurm, submission {}).\n"
-                                    "#SBATCH --job-name=admitgen-merge\n"
-                                    "#SBATCH --cpus-per-task={}\n"
-                                    "#SBATCH --output={}/merge-%j.out\n"
-                                    "set -eu\n"
-                                    "exec {} library merge {} --threads {}\n",
+                        fmt::format(R"SH(#!/bin/sh
+# The merge of the library in {} (admitgen library slurm, submission {}).
+#SBATCH --job-name=admitgen-merge
+#SBATCH --cpus-per-task={}
+#SBATCH --output={}/merge-%j.out
+set -eu
+exec {} library merge {} --threads {}
+)SH",
                                     root.string(), n, o.merge_threads, (slurm / "logs").string(), exe, where,
                                     o.merge_threads));
   if (s.units > 0) {
-    s.commands.push_back(fmt::format("sbatch --parsable{} --array=0-{} {}", extra, s.units - 1, shell_quote(s.units_script)));
+    s.commands.push_back(fmt::format(R"SH(sbatch --parsable{} --array=0-{} {})SH", extra, s.units - 1, shell_quote(s.units_script)));
     if (!o.dry_run) s.array_job = run(s.commands.back());
   }
   const std::string dependency =
-      s.units == 0 ? "" : " --dependency=afterok:" + (o.dry_run ? std::string("ARRAY_JOB_ID") : s.array_job);
-  s.commands.push_back(fmt::format("sbatch --parsable{}{} {}", extra, dependency, shell_quote(s.merge_script)));
+      s.units == 0 ? "" : R"SH( --dependency=afterok:)SH" + (o.dry_run ? std::string("ARRAY_JOB_ID") : s.array_job);
+  s.commands.push_back(fmt::format(R"SH(sbatch --parsable{}{} {})SH", extra, dependency, shell_quote(s.merge_script)));
   if (!o.dry_run) s.merge_job = run(s.commands.back());
   if (!o.dry_run)
     write_file_atomically((slurm / fmt::format("submitted-{}.txt", n)).string(),
