@@ -51,12 +51,14 @@ std::string g(double x) { return fmt::format("{:.17g}", x); }
 // ---- SBC ---------------------------------------------------------------------------------------------------
 
 std::string sbc_ranks_csv(const std::vector<SbcReplicate>& reps, int draws) {
-  std::string s = "replicate,sampler,sampler_used,order,grid,noise,prior_draws,ess,outside_mass,parameter,family,truth,"
+  std::string s = "replicate,sampler,sampler_used,order,grid,noise,prior_draws,log_l_truth,max_log_l,ess,outside_mass,parameter,"
+                  "family,truth,"
                   "rank,draws,in50,in95,posterior_mean,posterior_std,passive_z\n";
   for (const auto& r : reps)
     for (const auto& p : r.ranks)
-      s += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.index, r.sampler, r.sampler_used,
-                       r.order.name(), r.grid, g(r.noise), r.prior_draws, g(r.ess), g(r.outside_mass), p.name,
+      s += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", r.index, r.sampler,
+                       r.sampler_used, r.order.name(), r.grid, g(r.noise), r.prior_draws, g(r.log_l_truth),
+                       g(r.max_log_l), g(r.ess), g(r.outside_mass), p.name,
                        family_label(report_family(p.family)), g(p.truth), p.rank, draws,
                        in_central(p.rank, draws, 0.5) ? 1 : 0, in_central(p.rank, draws, 0.95) ? 1 : 0, g(p.mean),
                        g(p.std), g(p.passive_z));

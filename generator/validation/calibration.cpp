@@ -196,6 +196,8 @@ SbcReplicate run_replicate(const SbcSettings& settings, int index, SamplerKind k
   r.sampler = sampler_name(kind);
   r.sampler_used = model.sampler;
   r.log_z = model.run.log_z;
+  r.max_log_l = model.run.max_log_likelihood;
+  r.log_l_truth = Likelihood(sim.data, order, DataCount::two_per_point)(sim.theta.data());
   const Eigen::ArrayXd fit_w = posterior_weights(model.run);
   const Eigen::ArrayXd w = generative_weights(sim, settings.noise_lo, settings.noise_hi, model.run);
   r.ess = effective_sample_size(w);

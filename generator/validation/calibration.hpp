@@ -124,6 +124,9 @@ struct SbcReplicate {
   std::string sampler;        ///< "full" | "poles" (asked for)
   std::string sampler_used;   ///< ModelResult::sampler (the pole sampler may fall back to full)
   double log_z = 0.0;
+  /// ln L (the fit's σ-marginal likelihood) at the truth and the best the run found: a truth far above the
+  /// run's best means the sampler missed the truth's mode.
+  double log_l_truth = 0.0, max_log_l = 0.0;
   double ess = 0.0;           ///< Kish ESS of the generative weights
   double outside_mass = 0.0;  ///< the fit's posterior mass outside R
   bool passive_changed = false;
