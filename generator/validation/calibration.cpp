@@ -257,8 +257,9 @@ std::vector<SbcReplicate> run_sbc(const SbcSettings& settings, const std::functi
 
 bool in_central(int rank, int draws, double level) {
   // rank ∈ {0..L}: the central set is the (L + 1)·level middle values.
+  // The tail count is rounded to the nearest integer first: 40 · 0.05 / 2 is 1.0000000000000009 in doubles.
   const double values = static_cast<double>(draws + 1);
-  const double tail = values * (1.0 - level) / 2.0;
+  const double tail = std::ceil(values * (1.0 - level) / 2.0 - 1e-9);
   return rank >= tail && rank <= values - 1.0 - tail;
 }
 
