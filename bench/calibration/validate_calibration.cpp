@@ -30,19 +30,23 @@ using namespace admitgen::validation;
 
 namespace {
 
-std::vector<SamplerKind> parse_samplers(const std::string& text) {
-  std::vector<SamplerKind> out;
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> out;
   std::stringstream ss(text);
   std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(parse_sampler_kind(item));
+  while (std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+std::vector<SamplerKind> parse_samplers(const std::string& text) {
+  std::vector<SamplerKind> out;
+  for (const auto& item : split(text)) out.push_back(parse_sampler_kind(item));
   return out;
 }
 
 std::vector<Order> parse_orders(const std::string& text) {
   std::vector<Order> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(Order::parse(item));
+  for (const auto& item : split(text)) out.push_back(Order::parse(item));
   return out;
 }
 
@@ -146,9 +150,11 @@ std::string confusion_csv(const std::vector<RecoveryCase>& cases) {
 void print_recovery(const RecoverySettings& st, const std::vector<RecoveryCase>& cases) {
   std::string noise;
   for (double n : st.noise) noise += (noise.empty() ? "" : ", ") + fmt::format("{:.3g}", n);
-  fmt::print("Order recovery: truths Q{}-{} x S{}-{}, noise {} of rms|G|, {} data sets per cell, grid {} ({} pts), fitted "
+  std::string truths;
+  for (const auto& t : st.truths) truths += (truths.empty() ? "" : ",") + t.name();
+  fmt::print("Order recovery: truths {}, noise {} of rms|G|, {} data sets per cell, grid {} ({} pts), fitted "
              "Q0-{} x S0-{}, {} live points, rule best, seed {}\n",
-             st.truths.front().q(), st.truths.back().q(), st.truths.front().s(), st.truths.back().s(), noise,
+             truths, noise,
              st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.seed);
   fmt::print("Identifiable: D = min over one-term-smaller orders of ||G_true - G_ml||/sigma >= {:g} (D^2 = gain in max ln "
              "L, nats)\n",
@@ -217,6 +223,7 @@ int main(int argc, char** argv) {
   SbcSettings sbc;
   RecoverySettings rec;
   std::string samplers = "full,poles", orders = "Q1S1,Q0S2,Q0S1,Q1S2", rec_samplers = "full", out_dir;
+  std::string truths = "Q0S1,Q0S2,Q0S3,Q1S1,Q1S2,Q1S3,Q2S1,Q2S2,Q2S3", noise = "0.003,0.01,0.03";
   int bins = 10, threads = 0, live = 100;
   std::uint64_t seed = 1;
   app.add_option("--replicates", sbc.replicates, "SBC replicates (0: skip SBC)")->capture_default_str();
@@ -227,6 +234,8 @@ int main(int argc, char** argv) {
   app.add_option("--live", live, "live points of every fit")->check(CLI::Range(10, 100000))->capture_default_str();
   app.add_option("--per-cell", rec.per_cell, "order recovery: data sets per true order and noise (0: skip)")
       ->capture_default_str();
+  app.add_option("--truths", truths, "order recovery: true orders")->capture_default_str();
+  app.add_option("--noise", noise, "order recovery: noise levels (complex std / rms|G|)")->capture_default_str();
   app.add_option("--recovery-samplers", rec_samplers, "order recovery: samplers (full, poles)")->capture_default_str();
   app.add_option("--qmax", rec.qmax, "order recovery: fitted grid Q0-qmax")->capture_default_str();
   app.add_option("--smax", rec.smax, "order recovery: fitted grid S0-smax")->capture_default_str();
@@ -238,6 +247,9 @@ int main(int argc, char** argv) {
     sbc.samplers = parse_samplers(samplers);
     sbc.orders = parse_orders(orders);
     rec.samplers = parse_samplers(rec_samplers);
+    rec.truths = parse_orders(truths);
+    rec.noise.clear();
+    for (const auto& n : split(noise)) rec.noise.push_back(std::stod(n));
     if ((sbc.draws + 1) % 40 != 0 || bins < 2 || (sbc.draws + 1) % bins != 0)
       throw InputError(fmt::format("--draws {} --bins {}: need (draws + 1) a multiple of 40 and of bins", sbc.draws, bins));
     sbc.live = rec.live = live;
