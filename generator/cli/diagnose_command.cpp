@@ -26,13 +26,13 @@ namespace {
 using namespace admitgen::diagnosis;
 
 /// --sim names a CSV when such a file exists, a material SPEC otherwise.
-SimulatedSide simulated_side(const DiagnoseCommand& o, const ReadOptions& read, const Air& air) {
+SimulatedSide simulated_side(const DiagnoseCommand& o, const Air& air) {
   if (o.fit) {
     const auto surface = multipole_from_fit(io::read_fit_file(*o.fit), "", Estimate::mean, *o.fit);
     return SimulatedSide::from_material(Material{surface}, air, "fit " + *o.fit + " (" + surface.order.name() + ", mean)");
   }
   if (std::filesystem::is_regular_file(*o.sim))
-    return SimulatedSide::from_table(read_measurement(*o.sim, read), "table " + *o.sim);
+    return SimulatedSide::from_table(read_measurement(*o.sim, o.sim_read), "table " + *o.sim);
   return SimulatedSide::from_material(parse_material_spec(*o.sim, io::read_fit_file), air, "SPEC " + *o.sim);
 }
 
@@ -44,7 +44,7 @@ DiagnosisRequest to_request(const DiagnoseCommand& o) {
   const ReadOptions& read = o.read;
   const TubeSetup& tube = o.tube;
   if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
-  DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, read, Air::at_celsius(tube.temperature_c)), tube,
+  DiagnosisRequest r{read_measurement(o.real, read), simulated_side(o, Air::at_celsius(tube.temperature_c)), tube,
                      o.settings, std::nullopt};
   if (o.fs) r.stages = StageRequest{io::read_fit_file(*o.fit), *o.fit, *o.fs, codegen::parse_format(o.format), tube};
   return r;
@@ -84,13 +84,18 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
       "Decision: the effect with the largest Bayes factor against no effect if it reaches 20 dB, else none.");
   sub->add_option("--real,-r", cmd->real, "Measured admittance (CSV, read with the data options)")->required();
-  auto* sim = sub->add_option("--sim,-s", cmd->sim, "Simulated admittance: a CSV (same data options) or a material SPEC");
+  auto* sim = sub->add_option("--sim,-s", cmd->sim,
+                              "Simulated admittance: a CSV (read with the data options, each overridden by its "
+                              "--sim-* twin) or a material SPEC");
   auto* fit = sub->add_option("--fit", cmd->fit, "fit.json: its selected model is the simulated side");
   sim->excludes(fit);
   sub->add_option("--out,-o", cmd->out, "Output directory (created if missing)")->required();
   sub->add_option("--fs", cmd->fs, "Sample rate [Hz] of the pipeline stages (with --fit)");
   sub->add_option("--format", cmd->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
   add_data_options(*sub, cmd->read);
+  add_data_options(*sub, cmd->sim_given,
+                   {"sim-", "Reading a --sim table, where it differs from --real (--sim-columns, --sim-quantity, ...; "
+                            "each defaults to its data option)"});
   add_tube_options(*sub, cmd->tube);
   sub->add_option("--live", cmd->settings.sampler.live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
   sub->add_option("--dlogz", cmd->settings.sampler.dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
@@ -102,6 +107,7 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
   sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
   sub->callback([cmd, sub, &exit_code] {
     cmd->format_given = sub->count("--format") > 0;
+    cmd->sim_read = with_given_options(*sub, "sim-", cmd->read, cmd->sim_given);
     exit_code = run_diagnose_command(*cmd);
   });
 }

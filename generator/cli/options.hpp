@@ -25,10 +25,23 @@ CLI::Option* add_parsed_option(CLI::App& app, const std::string& name, T& field,
 /// A flag that sets a boolean setting to false ("--no-...").
 CLI::Option* add_clearing_flag(CLI::App& app, const std::string& name, bool& field, const std::string& help);
 
+/// Where a set of data options lives: prefix "" gives --columns, --band, ...; prefix "sim-" gives
+/// --sim-columns, --sim-band, ... (diagnose reads its --sim table with them); group titles them in --help.
+struct DataOptionScope {
+  std::string prefix;
+  std::string group;
+};
+
 /// Reading measured data (fit, diagnose): layout (--delimiter, --decimal, --skip-rows), columns
 /// (--columns), quantity and units (--quantity, --normalized / --rho-c, --magnitude, --phase-unit,
-/// --time-convention), --band and --no-plausibility-errors.
-void add_data_options(CLI::App& app, ReadOptions& read);
+/// --time-convention), --band and --no-plausibility-errors, each with scope.prefix after "--".
+void add_data_options(CLI::App& app, ReadOptions& read, const DataOptionScope& scope = {});
+
+/// base, with every field whose option "--PREFIX..." was given on app's command line taken from given
+/// (the options add_data_options(app, given, {PREFIX}) filled): a second file read like the first
+/// except where its own options say otherwise.
+ReadOptions with_given_options(const CLI::App& app, const std::string& prefix, const ReadOptions& base,
+                               const ReadOptions& given);
 
 /// The impedance tube (synth, diagnose): --tube-diameter, --mic-spacing, --mic-distance, --temperature.
 void add_tube_options(CLI::App& app, TubeSetup& tube);

@@ -151,6 +151,13 @@ std::pair<std::string, std::string> split_name_unit(const std::string& field) {
   const auto slash = f.rfind(" / ");
   if (slash != std::string::npos && is_known_unit(normalise_unit(f.substr(slash + 3), false)))
     return {trim(f.substr(0, slash)), f.substr(slash + 3)};
+  // ISO 80000-1 "quantity/unit" without spaces ("f/kHz", "Z/Pa s/m"): the first slash after which the rest
+  // is a unit (so a unit with its own slash stays whole); "Z/Z0" or "Re(Z/rho c)" have none.
+  for (auto at = f.find('/'); at != std::string::npos && at > 0; at = f.find('/', at + 1)) {
+    const std::string unit = trim(f.substr(at + 1));
+    const std::string reduced = normalise_unit(unit, false);
+    if (!reduced.empty() && reduced != "1" && is_known_unit(reduced)) return {trim(f.substr(0, at)), unit};
+  }
   return {f, {}};
 }
 

@@ -17,6 +17,37 @@ namespace {
 using cd = std::complex<double>;
 constexpr cd kJ{0.0, 1.0};
 
+/// a/b without the library's scaled division (__divdc3): |b| here lies far from overflow and underflow
+/// (the slit's denominators below are between about 1e-12 and 4 in modulus).
+cd divide(cd a, cd b) {
+  const double inv = 1.0 / std::norm(b);
+  return {(a.real() * b.real() + a.imag() * b.imag()) * inv, (a.imag() * b.real() - a.real() * b.imag()) * inv};
+}
+
+/// (1 − t)/(1 + t) for t = e^{−2x}(cos 2y − j sin 2y), x ≥ 0: the common core of tanh(x + jy) and
+/// tan(y − jx). With s, c = sin y, cos y: 1 − e^{−2x} cos 2y = −expm1(−2x) cos 2y + 2s² keeps full relative
+/// precision for small arguments, and |t| ≤ 1 keeps wide slits and lossy columns free of overflow.
+cd one_minus_over_one_plus(double x, double y) {
+  const double m = std::expm1(-2.0 * x), decay = 1.0 + m, s = std::sin(y), c = std::cos(y);
+  const double sin2 = 2.0 * s * c, cos2 = 1.0 - 2.0 * s * s;
+  return divide({-m * cos2 + 2.0 * s * s, decay * sin2}, {1.0 + decay * cos2, -decay * sin2});
+}
+
+/// tanh(z)/z for z = x(1 + j), x ≥ 0: the slit argument σ = (w/2)√(jω/ν) = x(1 + j) with
+/// x = (w/2)√(ω/2ν); tanh z = (1 − e^{−2z})/(1 + e^{−2z}).
+cd tanh_over_argument_diagonal(double x) {
+  if (x == 0.0) return 1.0;
+  return divide(one_minus_over_one_plus(x, x), cd{x, x});
+}
+
+/// tan w = −j (1 − e^{−2jw})/(1 + e^{−2jw}) for Im w ≤ 0 (a wave decaying along the slit, e^{+jωt}); the
+/// mirror tan w = conj tan(conj w) covers Im w > 0.
+cd tan_complex(cd w) {
+  if (w.imag() > 0.0) return std::conj(tan_complex(std::conj(w)));
+  const cd ratio = one_minus_over_one_plus(-w.imag(), w.real());
+  return {ratio.imag(), -ratio.real()};
+}
+
 constexpr const char* kNames =
     "none, reference_plane, mic_spacing, mic_mismatch, temperature, tube_losses, edge_gap, frame_resonance, "
     "fractional_order, air_gap, heteroscedastic_noise";
@@ -128,23 +159,20 @@ Eigen::ArrayXcd apply_edge_gap(const EdgeGap& e, double tube_diameter_m, const A
 }
 
 SlitModel::SlitModel(const Air& air, const Eigen::ArrayXd& f_hz)
-    : air_(air), omega_(f_hz.size()), root_v_(f_hz.size()), root_t_(f_hz.size()) {
-  for (Eigen::Index i = 0; i < f_hz.size(); ++i) {
-    omega_[i] = 2.0 * EIGEN_PI * f_hz[i];
-    root_v_[i] = std::sqrt(kJ * omega_[i] / air.nu());
-    root_t_[i] = std::sqrt(kJ * omega_[i] * air.prandtl / air.nu());
-  }
-}
+    : air_(air), omega_(2.0 * EIGEN_PI * f_hz), half_root_v_((omega_ / (2.0 * air.nu())).sqrt()),
+      half_root_t_(half_root_v_ * std::sqrt(air.prandtl)) {}
 
 Eigen::ArrayXcd SlitModel::admittance(double width_m, double depth_m) const {
+  // σ_v = (w/2)√(jω/ν) = x_v(1 + j) with x_v = (w/2)√(ω/2ν), likewise σ_t with Pr.
+  const double gamma_p0 = air_.gamma * air_.p0;
   Eigen::ArrayXcd y(omega_.size());
   for (Eigen::Index i = 0; i < omega_.size(); ++i) {
-    const cd sv = (width_m / 2.0) * root_v_[i];
-    const cd st = (width_m / 2.0) * root_t_[i];
-    const cd rho = air_.rho0 / (1.0 - std::tanh(sv) / sv);
-    const cd bulk = air_.gamma * air_.p0 / (1.0 + (air_.gamma - 1.0) * std::tanh(st) / st);
-    const cd zc = std::sqrt(rho * bulk), k = omega_[i] * std::sqrt(rho / bulk);
-    y[i] = air_.rho_c() * kJ * std::tan(k * depth_m) / zc;  // ρ0c0/(−j Z_c cot kh)
+    const cd fv = tanh_over_argument_diagonal(0.5 * width_m * half_root_v_[i]);
+    const cd ft = tanh_over_argument_diagonal(0.5 * width_m * half_root_t_[i]);
+    const cd rho = divide(air_.rho0, 1.0 - fv);
+    const cd bulk = divide(gamma_p0, 1.0 + (air_.gamma - 1.0) * ft);
+    const cd zc = std::sqrt(rho * bulk), k = omega_[i] * divide(zc, bulk);  // ω√(ρ/K) = ω√(ρK)/K
+    y[i] = divide(air_.rho_c() * kJ * tan_complex(k * depth_m), zc);  // ρ0c0/(−j Z_c cot kh)
   }
   return y;
 }

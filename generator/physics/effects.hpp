@@ -114,7 +114,7 @@ class SlitModel {
  private:
   Air air_;
   Eigen::ArrayXd omega_;
-  Eigen::ArrayXcd root_v_, root_t_;  ///< √(jω/ν), √(jω Pr/ν)
+  Eigen::ArrayXd half_root_v_, half_root_t_;  ///< √(ω/2ν), √(ω Pr/2ν): √(jω/ν) = √(ω/2ν)(1 + j)
 };
 
 }  // namespace admitgen

@@ -7,7 +7,14 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <complex>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 namespace admitgen::test {
 namespace {
@@ -55,6 +62,48 @@ TEST_CASE("diagnose CLI: the simulated side as a CSV table") {
   REQUIRE(r.exit_code == 1);
   const auto j = nlohmann::json::parse(read_text(dir + "/d/diagnosis.json"));
   CHECK(j["verdict"]["effect"] == "frame_resonance");
+}
+
+TEST_CASE("diagnose CLI: a --sim table in another layout is read with the --sim-* options") {
+  // The same simulated admittance, rewritten as a tube program might: no header, a spare column, impedance
+  // z = 1/y, ';' and decimal commas. The real file is read as before; --sim-columns and --sim-quantity
+  // describe the sim table, and the diagnosis (all evidences, printed with 17 digits, so any other reading
+  // would change them) must equal the one from the plain table. Without them the sim table's four columns
+  // do not match the f,re,im the real file is read with: exit 2.
+  const std::string dir = scratch_dir("diagnose_cli_sim_options");
+  const std::string real = make_real(dir);
+  REQUIRE(run_admitgen("synth --material " + kMaterial + " --band 150:2000 --points 80 -q --out " + dir + "/sim.csv")
+              .exit_code == 0);
+  std::ifstream in(dir + "/sim.csv");
+  std::ofstream out(dir + "/sim_z.txt");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || !(std::isdigit(static_cast<unsigned char>(line[0])) != 0)) continue;
+    double f = 0, re = 0, im = 0;
+    REQUIRE(std::sscanf(line.c_str(), "%lf,%lf,%lf", &f, &re, &im) == 3);
+    const std::complex<double> z = 1.0 / std::complex<double>(re, im);
+    std::string row = fmt::format("{:.17g};7;{:.17g};{:.17g}", f, z.real(), z.imag());
+    std::replace(row.begin(), row.end(), '.', ',');
+    out << row << "\n";
+  }
+  out.close();
+  const std::string common = "diagnose --real " + real + " --live 40 -q";
+  REQUIRE(run_admitgen(common + " --sim " + dir + "/sim.csv --out " + dir + "/plain").exit_code == 1);
+  REQUIRE(run_admitgen(common + " --sim " + dir + "/sim_z.txt --sim-columns f,_,re,im --sim-quantity impedance --out " +
+                       dir + "/other")
+              .exit_code == 1);
+  auto plain = nlohmann::json::parse(read_text(dir + "/plain/diagnosis.json"));
+  auto other = nlohmann::json::parse(read_text(dir + "/other/diagnosis.json"));
+  CHECK(other["verdict"]["effect"] == "frame_resonance");
+  REQUIRE(other["effects"].size() == plain["effects"].size());
+  for (std::size_t i = 0; i < plain["effects"].size(); ++i) {
+    CAPTURE(i);
+    CHECK(other["effects"][i]["effect"] == plain["effects"][i]["effect"]);
+    // z = 1/y through 17-digit text and back changes y by a few ulp: evidences agree to 1e-9 relative.
+    CHECK(other["effects"][i]["log_evidence"].get<double>() ==
+          doctest::Approx(plain["effects"][i]["log_evidence"].get<double>()).epsilon(1e-9));
+  }
+  CHECK(run_admitgen(common + " --sim " + dir + "/sim_z.txt --out " + dir + "/bad").exit_code == 2);
+  CHECK_FALSE(std::filesystem::exists(dir + "/bad"));
 }
 
 TEST_CASE("diagnose CLI: bad input exits 2 and writes nothing") {

@@ -50,6 +50,14 @@ TEST_CASE("column names: spellings of tube software and spreadsheets are recogni
     CHECK(m.normalised == c.normalised);
   }
   CHECK(split_name_unit("f_kHz").second == "kHz");
+  // ISO 80000-1 "quantity/unit" without spaces; a unit keeps its own slash; a ratio is not a unit.
+  CHECK(split_name_unit("f/kHz") == std::pair<std::string, std::string>{"f", "kHz"});
+  CHECK(classify_column("f/kHz").kind == Kind::frequency);
+  CHECK(split_name_unit("Re Z/Pa s/m") == std::pair<std::string, std::string>{"Re Z", "Pa s/m"});
+  CHECK(split_name_unit("phi/deg").second == "deg");
+  CHECK(split_name_unit("Z/Z0").second.empty());
+  CHECK(split_name_unit("Re(Z/rho c)").second.empty());
+  CHECK(classify_column("Re Z/Z0").normalised);
   CHECK(classify_column("FkHz").implied_unit == UnitKind::kilohertz);
   CHECK(normalise_name("RE Z/Z0 [-]") == normalise_name("re_z/z0"));
   CHECK(unit_kind(normalise_unit("[Pa·s/m]", true)) == UnitKind::si_impedance);

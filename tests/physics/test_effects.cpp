@@ -96,6 +96,34 @@ TEST_CASE("edge_gap: slit admittance limits and epsilon") {
   }
 }
 
+TEST_CASE("edge_gap: the slit admittance equals the textbook formula with complex tanh, sqrt and tan") {
+  // Reference: docs/physics.md §5.1 f written with std::tanh/std::tan on std::complex (glibc's ctanh/ctan),
+  // against SlitModel's real-exponential form. Grid: the edge_gap prior of `diagnose` and beyond, w 0.02-5 mm,
+  // h 2-300 mm, f 10 Hz-12 kHz. Tolerance: both forms are accurate to a few ulp before two ill-conditioned
+  // steps, 1 − tanh(σ)/σ (condition ≈ 1/|1 − tanh(σ)/σ| ≤ 3/(2x²) ≈ 6e3 at the smallest x = 0.014 here) and
+  // tan(kh) near the quarter-wave pole (condition ≈ 1/|1 + e^{−2jkh}|, ≤ 1e3 for the slit's losses at
+  // w ≤ 5 mm). 1e-9 relative is about 10 ulp times both condition numbers.
+  const Air air = Air::at_celsius(20.0);
+  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(400, std::log(10.0), std::log(12000.0)).exp();
+  double worst = 0.0;
+  for (double w : {2e-5, 5e-5, 1e-4, 3e-4, 1e-3, 3e-3, 5e-3})
+    for (double h : {0.002, 0.02, 0.05, 0.12, 0.3}) {
+      const Eigen::ArrayXcd y = slit_admittance(w, h, air, f);
+      for (Eigen::Index i = 0; i < f.size(); ++i) {
+        const double omega = 2.0 * EIGEN_PI * f[i];
+        const cd sv = (w / 2.0) * std::sqrt(cd(0.0, omega / air.nu()));
+        const cd st = (w / 2.0) * std::sqrt(cd(0.0, omega * air.prandtl / air.nu()));
+        const cd rho = air.rho0 / (1.0 - std::tanh(sv) / sv);
+        const cd bulk = air.gamma * air.p0 / (1.0 + (air.gamma - 1.0) * std::tanh(st) / st);
+        const cd reference = air.rho_c() * cd(0.0, 1.0) * std::tan(omega * std::sqrt(rho / bulk) * h) /
+                             std::sqrt(rho * bulk);
+        worst = std::max(worst, std::abs(y[i] - reference) / std::abs(reference));
+      }
+    }
+  MESSAGE("largest relative difference " << worst);
+  CHECK(worst <= 1e-9);
+}
+
 TEST_CASE("sample effect sizes of docs/physics.md 5.1 for the reference case (Miki 10 kPa s/m2, 50 mm, d = 100 mm)") {
   // docs/physics.md quotes these sizes (computed with admitgen's air); figures with 1-2 significant digits
   // are matched to ±20 % of the value.
