@@ -16,6 +16,7 @@
 #include "inference/pole_space.hpp"
 #include "inference/residue_draws.hpp"
 #include "inference/residue_marginal.hpp"
+#include "inference/evidence.hpp"
 #include "inference/posterior.hpp"
 #include "inference/student_t.hpp"
 #include "selection/fit.hpp"
@@ -35,13 +36,6 @@ struct ImportanceEstimate {
 };
 
 namespace detail {
-
-inline double log_add(double a, double b) {
-  if (a == -std::numeric_limits<double>::infinity()) return b;
-  if (b == -std::numeric_limits<double>::infinity()) return a;
-  const double m = std::max(a, b);
-  return m + std::log(std::exp(a - m) + std::exp(b - m));
-}
 
 /// Multivariate t_ν: log density at x and draws, location μ and scale matrix C = LLᵀ.
 struct MultivariateT {
@@ -80,6 +74,31 @@ inline bool in_domain(const Order& order, const PriorRanges& priors, const Eigen
 
 }  // namespace detail
 
+/// ln P_box of the residues given ψ: the sampled bound where the lower and upper bounds agree to 1e-9, else
+/// the fraction of `box_draws` untruncated draws inside the box (unbiased).
+inline double log_box_mass(const ResidueConditional& c, const ResidueMarginal& marginal, long box_draws, Rng& rng) {
+  if (!(-std::expm1(c.log_p_lo - c.log_p_up) > 1e-9)) return c.log_p_sampled;
+  long hits = 0;
+  for (long b = 0; b < box_draws; ++b)
+    hits += in_residue_box(untruncated_residue_draw(c, rng), marginal.box_lo(), marginal.box_hi()) ? 1 : 0;
+  return std::log(static_cast<double>(hits) / static_cast<double>(box_draws));
+}
+
+/// ln of the mean of the ratios e^{log_ratio} (ln Z), the standard error of that mean relative to it, and
+/// the Kish effective sample size.
+inline ImportanceEstimate mean_of_ratios(const std::vector<double>& log_ratio) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (double v : log_ratio) top = std::max(top, v);
+  double sum = 0.0, sum2 = 0.0;
+  for (double v : log_ratio) {
+    const double e = std::exp(v - top);
+    sum += e;
+    sum2 += e * e;
+  }
+  const double n = static_cast<double>(log_ratio.size()), mean_ratio = sum / n;
+  return {top + std::log(mean_ratio), std::sqrt((sum2 / n - mean_ratio * mean_ratio) / n) / mean_ratio, sum * sum / sum2};
+}
+
 /// ln Z of `order` by importance sampling, q built from the posterior samples of `runs` (θ as fit_order
 /// returns them, folded to the reduced form), `kernels` resampled points per run, `draws` proposal draws,
 /// `box_draws` untruncated residue draws for P_box where its bounds differ by more than 1e-9.
@@ -117,9 +136,9 @@ inline ImportanceEstimate importance_log_z(const Measurement& data, const Order&
   const double log_kernels = std::log(static_cast<double>(kernel.size())), log_wides = std::log(static_cast<double>(wide.size()));
   const auto log_q = [&](const Eigen::VectorXd& x) {
     double lk = -std::numeric_limits<double>::infinity(), lw = lk;
-    for (const auto& t : kernel) lk = detail::log_add(lk, t.log_density(x));
-    for (const auto& t : wide) lw = detail::log_add(lw, t.log_density(x));
-    return detail::log_add(std::log1p(-kWide) + lk - log_kernels, std::log(kWide) + lw - log_wides);
+    for (const auto& t : kernel) lk = log_add_exp(lk, t.log_density(x));
+    for (const auto& t : wide) lw = log_add_exp(lw, t.log_density(x));
+    return log_add_exp(std::log1p(-kWide) + lk - log_kernels, std::log(kWide) + lw - log_wides);
   };
   // Prior density on D: Q! S! 2^S / V_ψ.
   double log_prior = -order.q() * std::log(priors.lambda.width()) -
@@ -136,25 +155,10 @@ inline ImportanceEstimate importance_log_z(const Measurement& data, const Order&
       log_ratio.push_back(-std::numeric_limits<double>::infinity());
       continue;
     }
-    double log_box = c->log_p_sampled;  // exact to 1e-9 unless the bounds differ
-    if (-std::expm1(c->log_p_lo - c->log_p_up) > 1e-9) {
-      long hits = 0;
-      for (long b = 0; b < box_draws; ++b)
-        hits += in_residue_box(untruncated_residue_draw(*c, rng), marginal.box_lo(), marginal.box_hi()) ? 1 : 0;
-      log_box = std::log(static_cast<double>(hits) / static_cast<double>(box_draws));
-    }
-    log_ratio.push_back(c->log_marginal - c->log_p_sampled + log_box + log_prior - log_q(psi));
+    log_ratio.push_back(c->log_marginal - c->log_p_sampled + log_box_mass(*c, marginal, box_draws, rng) + log_prior -
+                        log_q(psi));
   }
-  double top = -std::numeric_limits<double>::infinity();
-  for (double v : log_ratio) top = std::max(top, v);
-  double sum = 0.0, sum2 = 0.0;
-  for (double v : log_ratio) {
-    const double e = std::exp(v - top);
-    sum += e;
-    sum2 += e * e;
-  }
-  const double n = static_cast<double>(draws), mean_ratio = sum / n;
-  return {top + std::log(mean_ratio), std::sqrt((sum2 / n - mean_ratio * mean_ratio) / n) / mean_ratio, sum * sum / sum2};
+  return mean_of_ratios(log_ratio);
 }
 
 }  // namespace admitgen::test

@@ -14,8 +14,9 @@
 // not known to 1e-9 (each case a few seconds on one core).
 #include "core/rng.hpp"
 #include "data/csv_reader.hpp"
-#include "inference/residue_draws.hpp"
+#include "inference/evidence.hpp"
 #include "inference/residue_marginal.hpp"
+#include "pole_importance.hpp"
 #include "selection/fit.hpp"
 #include "test_support.hpp"
 
@@ -49,15 +50,7 @@ double t_draw(Rng& rng, double centre, double scale) {
   return centre + scale * z / std::sqrt(w / kNu);
 }
 
-double log_add(double a, double b) {
-  if (a == -std::numeric_limits<double>::infinity()) return b;
-  const double m = std::max(a, b);
-  return m + std::log(std::exp(a - m) + std::exp(b - m));
-}
-
-struct Estimate {
-  double log_z, error;
-};
+using Estimate = test::ImportanceEstimate;
 
 /// Importance-sampling ln Z for Q1S1 or Q1S2 (Table 1 pole ranges; residue ranges from `priors`).
 Estimate importance_log_z(const Measurement& data, const Order& order, const PriorRanges& priors, long draws) {
@@ -89,7 +82,7 @@ Estimate importance_log_z(const Measurement& data, const Order& order, const Pri
       const std::size_t tt = static_cast<std::size_t>(1 + 2 * sl), xx = static_cast<std::size_t>(3 - 2 * sl);
       if (pairs == 2 && !in_pair_prior(psi[xx], psi[xx + 1])) continue;
       for (const double sg : {1.0, -1.0})
-        log_mix = log_add(log_mix, -std::log(2.0 * pairs) + t_log_density(psi[tt], 1530.0, kPairScale) +
+        log_mix = log_add_exp(log_mix, -std::log(2.0 * pairs) + t_log_density(psi[tt], 1530.0, kPairScale) +
                                        t_log_density(psi[tt + 1], sg * 10060.0, kPairScale) -
                                        (pairs == 2 ? std::log(pair_area) : 0.0));
     }
@@ -102,26 +95,10 @@ Estimate importance_log_z(const Measurement& data, const Order& order, const Pri
       log_ratio.push_back(-std::numeric_limits<double>::infinity());
       continue;
     }
-    double log_box = c->log_p_sampled;  // exact to 1e-9 unless the bounds differ
-    if (-std::expm1(c->log_p_lo - c->log_p_up) > 1e-9) {
-      constexpr long kBoxDraws = 2000;
-      long hits = 0;
-      for (long d = 0; d < kBoxDraws; ++d)
-        hits += in_residue_box(untruncated_residue_draw(*c, rng), marginal.box_lo(), marginal.box_hi()) ? 1 : 0;
-      log_box = std::log(static_cast<double>(hits) / kBoxDraws);
-    }
-    log_ratio.push_back(c->log_marginal - c->log_p_sampled + log_box + log_prior - log_q);
+    log_ratio.push_back(c->log_marginal - c->log_p_sampled + test::log_box_mass(*c, marginal, 2000, rng) + log_prior -
+                        log_q);
   }
-  double top = -std::numeric_limits<double>::infinity();
-  for (double v : log_ratio) top = std::max(top, v);
-  double sum = 0.0, sum2 = 0.0;
-  for (double v : log_ratio) {
-    const double e = std::exp(v - top);
-    sum += e;
-    sum2 += e * e;
-  }
-  const double n = static_cast<double>(draws), mean = sum / n;
-  return {top + std::log(mean), std::sqrt((sum2 / n - mean * mean) / n) / mean};
+  return test::mean_of_ratios(log_ratio);
 }
 
 Measurement reference_file() {
