@@ -19,6 +19,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 namespace admitgen::cli {
 namespace {
@@ -114,9 +115,10 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
   sub->add_option("--fs", cmd->fs, "Sample rate [Hz] of the pipeline stages (with --fit)");
   sub->add_option("--format", cmd->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
   add_data_options(*sub, cmd->read);
-  add_data_options(*sub, cmd->sim_given,
-                   {"sim-", "Reading a --sim table, where it differs from --real (--sim-columns, --sim-quantity, ...; "
-                            "each defaults to its data option)"});
+  const auto sim_options = std::make_shared<const DataOptions>(add_data_options(
+      *sub, cmd->sim_given,
+      {"sim-", "Reading a --sim table, where it differs from --real (--sim-columns, --sim-quantity, ...; "
+               "each defaults to its data option)"}));
   add_tube_options(*sub, cmd->tube);
   sub->add_option("--live", cmd->settings.sampler.live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
   sub->add_option("--dlogz", cmd->settings.sampler.dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
@@ -126,9 +128,9 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
   sub->add_flag("--quiet,-q", cmd->quiet, "No summary output");
-  sub->callback([cmd, sub, &exit_code] {
+  sub->callback([cmd, sub, sim_options, &exit_code] {
     cmd->format_given = sub->count("--format") > 0;
-    cmd->sim_read = with_given_options(*sub, "sim-", cmd->read, cmd->sim_given);
+    cmd->sim_read = sim_options->take_given(cmd->read, cmd->sim_given);
     exit_code = run_diagnose_command(*cmd);
   });
 }

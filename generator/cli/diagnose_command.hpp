@@ -30,7 +30,7 @@ struct DiagnoseCommand {
   std::string format = "q31";
   bool format_given = false;
   ReadOptions read;      ///< --real, and a --sim CSV except where a --sim-* data option says otherwise
-  ReadOptions sim_given;  ///< what the --sim-* data options set (with_given_options merges them)
+  ReadOptions sim_given;  ///< what the --sim-* data options set (DataOptions::take_given merges them)
   ReadOptions sim_read;   ///< how a --sim CSV is read: read with the given --sim-* options
   TubeSetup tube;
   diagnosis::IdentificationSettings settings;  ///< sampler (--live, --dlogz, --seed) and --threads

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace admitgen::cli {
 
@@ -32,16 +33,28 @@ struct DataOptionScope {
   std::string group;
 };
 
+/// The data options add_data_options registered, each with the ReadOptions field it sets.
+class DataOptions {
+ public:
+  using Take = void (*)(const ReadOptions& from, ReadOptions& to);
+  /// base, with every field whose option was given on the command line taken from given (the ReadOptions
+  /// these options filled): a second file read like the first except where its own options say otherwise.
+  /// Call after parsing.
+  ReadOptions take_given(const ReadOptions& base, const ReadOptions& given) const;
+
+ private:
+  struct Bound {
+    CLI::Option* option;
+    Take take;
+  };
+  std::vector<Bound> bound_;
+  friend DataOptions add_data_options(CLI::App& app, ReadOptions& read, const DataOptionScope& scope);
+};
+
 /// Reading measured data (fit, diagnose): layout (--delimiter, --decimal, --skip-rows), columns
 /// (--columns), quantity and units (--quantity, --normalized / --rho-c, --magnitude, --phase-unit,
 /// --time-convention), --band and --no-plausibility-errors, each with scope.prefix after "--".
-void add_data_options(CLI::App& app, ReadOptions& read, const DataOptionScope& scope = {});
-
-/// base, with every field whose option "--PREFIX..." was given on app's command line taken from given
-/// (the options add_data_options(app, given, {PREFIX}) filled): a second file read like the first
-/// except where its own options say otherwise.
-ReadOptions with_given_options(const CLI::App& app, const std::string& prefix, const ReadOptions& base,
-                               const ReadOptions& given);
+DataOptions add_data_options(CLI::App& app, ReadOptions& read, const DataOptionScope& scope = {});
 
 /// The impedance tube (synth, diagnose): --tube-diameter, --mic-spacing, --mic-distance, --temperature.
 void add_tube_options(CLI::App& app, TubeSetup& tube);
