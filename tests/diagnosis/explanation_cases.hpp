@@ -80,6 +80,21 @@ inline std::vector<ValidationCase> material_cases() {
        "miki(sigma=20000, d=26mm) + miki(sigma=5000, d=30mm)", "1.d", 1.3},
       {"mpp+air+miki", "mpp(hole=0.5mm, t=0.5mm, p=2%) + air(d=20mm) + miki(sigma=10000, d=30mm)",
        "mpp(hole=0.5mm, t=0.5mm, p=2%) + air(d=20mm) + miki(sigma=15000, d=30mm)", "3.sigma", 1.5},
+      // The remaining parameters of each layer model (appended, so the seeds above stay as they were).
+      {"jca+air", jca, "jca(phi=0.80, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + air(d=20mm)",
+       "1.phi", 0.80 / 0.94},
+      {"jca+air", jca, "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=34um, lambda_th=110um, d=30mm) + air(d=20mm)",
+       "1.lambda", 34.0 / 56.0},
+      {"jca+air", jca, "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=180um, d=30mm) + air(d=20mm)",
+       "1.lambda_th", 180.0 / 110.0},
+      {"horoshenkov", "horoshenkov(phi=0.9, pore=150um, sigma_s=0.3, d=40mm)",
+       "horoshenkov(phi=0.75, pore=150um, sigma_s=0.3, d=40mm)", "1.phi", 0.75 / 0.9},
+      {"horoshenkov", "horoshenkov(phi=0.9, pore=150um, sigma_s=0.3, d=40mm)",
+       "horoshenkov(phi=0.9, pore=150um, sigma_s=0.45, d=40mm)", "1.sigma_s", 1.5},
+      {"mpp+air", "mpp(hole=0.4mm, t=0.4mm, p=1%) + air(d=50mm)", "mpp(hole=0.4mm, t=0.6mm, p=1%) + air(d=50mm)", "1.t",
+       1.5},
+      {"delany_bazley+air", "delany_bazley(sigma=20000, d=30mm) + air(d=30mm)",
+       "delany_bazley(sigma=26000, d=30mm) + air(d=30mm)", "1.sigma", 1.3},
   };
   std::vector<ValidationCase> out;
   std::uint64_t seed = 700;
@@ -92,7 +107,7 @@ inline std::vector<ValidationCase> material_cases() {
     c.ratio = o.ratio;
     c.clear = true;
     c.seed = ++seed;
-    c.label = fmt::format("material {} {} x{}", o.name, o.parameter, o.ratio);
+    c.label = fmt::format("material {} {} x{:.3g}", o.name, o.parameter, o.ratio);
     out.push_back(c);
   }
   return out;
