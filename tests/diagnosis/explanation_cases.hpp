@@ -191,6 +191,24 @@ inline std::vector<ValidationCase> out_of_vocabulary_cases() {
     c.distort = mic_drift(0.15, 4.0, c);
     add(c, "mic drift 15 % / 4 deg at the top");
   }
+  // Further cases, appended so the seeds above stay as they were: another law under the layered base, a
+  // sharper dip higher up, a drift of the other sign.
+  {
+    ValidationCase c;
+    c.material = bases[1];
+    c.real_spec = "horoshenkov(phi=0.95, pore=200um, sigma_s=0.4, d=30mm) + air(d=20mm)";
+    add(c, "law horoshenkov(phi=0.95, pore=200um, sigma_s=0.4, d=30mm) + air(d=20mm)");
+    c = ValidationCase{};
+    c.material = bases[0];
+    c.distort = absorption_dip(1500.0, 12.0, 0.1);
+    add(c, "absorption dip at 1500 Hz, q 12");
+    for (const BaseMaterial* m : {&bases[0], &bases[1]}) {
+      c = ValidationCase{};
+      c.material = *m;
+      c.distort = mic_drift(-0.12, -3.0, c);
+      add(c, "mic drift -12 % / -3 deg at the top");
+    }
+  }
   return out;
 }
 
