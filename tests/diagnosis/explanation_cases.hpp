@@ -232,6 +232,17 @@ inline double exact_shrink(const ValidationCase& c, const diagnosis::Diagnosis& 
   return d.gap.total / diagnosis::measure_gap(request.real.f_hz, request.real.y, exact_y(c), d.level).total;
 }
 
+/// Gap before / gap left by the exact model, without running the diagnosis (the same data and gap as
+/// run_case's): how far above the noise the case's own gap lies (≈ 1 when the gap is noise).
+inline double exact_shrink(const ValidationCase& c) {
+  const auto request = case_request(c);
+  const Eigen::ArrayXcd& y = request.real.y;
+  const double level = diagnosis::rms_level(y);
+  const Eigen::ArrayXcd y_sim = request.sim.admittance(request.real.f_hz);
+  return diagnosis::measure_gap(request.real.f_hz, y, y_sim, level).total /
+         diagnosis::measure_gap(request.real.f_hz, y, exact_y(c), level).total;
+}
+
 /// The largest shrink of any single effect.
 inline double best_single_shrink(const diagnosis::Diagnosis& d) {
   double best = 1.0;
