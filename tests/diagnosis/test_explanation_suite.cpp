@@ -96,6 +96,21 @@ TEST_SUITE("statistical") {
     CHECK(d.verdict.effect == "unexplained");
     CHECK_FALSE(d.verdict.explanation.empty());  // the best attempt is reported
   }
+
+  // An absorption dip on the MPP base: a real gap (the exact model shrinks it 14×) that no effect of the
+  // vocabulary moves (the best single shrinks it 1.03×, none is decisive). Its residual is structured,
+  // so the verdict is unexplained with no attempt, not none. Well under a second.
+  TEST_CASE("explanation suite: a structured gap no effect moves is unexplained, not none") {
+    const auto cases = out_of_vocabulary_cases();
+    const auto c = *std::find_if(cases.begin(), cases.end(),
+                                 [](const ValidationCase& x) { return x.label == "oov mpp absorption dip"; });
+    const auto d = run_case(c);
+    CHECK(exact_shrink(c) >= 2.0);       // the gap is real
+    CHECK(best_single_shrink(d) < 1.2);  // and no effect moves it
+    CHECK_FALSE(d.gap.whiteness.white);
+    CHECK(d.verdict.effect == "unexplained");
+    CHECK(d.verdict.explanation.empty());
+  }
 }
 
 }  // namespace admitgen::test
