@@ -18,7 +18,8 @@ std::size_t best_of(const std::vector<EffectResult>& results) {
 }
 
 bool holds(const std::vector<ExplanationStep>& steps, std::size_t candidate) {
-  return std::any_of(steps.begin(), steps.end(), [candidate](const ExplanationStep& s) { return s.candidate == candidate; });
+  return std::any_of(steps.begin(), steps.end(),
+                     [candidate](const ExplanationStep& s) { return s.candidate == candidate; });
 }
 
 /// The candidates of `steps`, in step order.
@@ -51,7 +52,8 @@ struct Search {
       for (const std::size_t i : m) with.push_back(&candidates[i]);
       tried.push_back(combine_effects(with));
     }
-    std::vector<EffectResult> out = evaluate_candidates(tried, likelihood, settings, log_z_floor, first_stream, progress);
+    std::vector<EffectResult> out =
+        evaluate_candidates(tried, likelihood, settings, log_z_floor, first_stream, progress);
     for (std::size_t k = 0; k < out.size(); ++k) fill_gap(out[k], tried[k], f_hz, y_real, gap_before);
     return out;
   }
@@ -62,7 +64,8 @@ struct Search {
   std::vector<ExplanationStep> restate(const std::vector<std::size_t>& members, const EffectResult& joint,
                                        std::uint64_t first_stream) const {
     std::vector<std::vector<std::size_t>> longer;
-    for (std::size_t k = 2; k < members.size(); ++k) longer.emplace_back(members.begin(), members.begin() + static_cast<std::ptrdiff_t>(k));
+    for (std::size_t k = 2; k < members.size(); ++k)
+      longer.emplace_back(members.begin(), members.begin() + static_cast<std::ptrdiff_t>(k));
     const std::vector<EffectResult> evaluated = evaluate(longer, log_z_none, first_stream);
     std::vector<const EffectResult*> prefix{&singles[members.front()]};
     for (const auto& r : evaluated) prefix.push_back(&r);
