@@ -9,12 +9,13 @@
 ///   out of vocabulary, among the cases no single effect halves (best single shrink < 2): unexplained
 ///   (also among those the exact model halves, i.e. whose gap is more than noise; oov-gaps prints the
 ///   exact model's shrink of each case without diagnosing).
-/// Usage: bench_validation [two|material|oov|oov-gaps|all] [--live N] [--threads N] [--stride K] [--from I] [--only TEXT]
-///   [--parameters]
+/// Usage: bench_validation [two|material|oov|oov-gaps|all] [--live N] [--threads N] [--stride K]
+///   [--from I] [--only TEXT] [--parameters]
 ///   (default all, 60 live points, all cores, every case; --stride K runs every K-th case of each set,
-///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT, --parameters prints every member's parameters).
-/// The combined search makes a case cost 30-170 s on one busy core (docs/diagnosis.md), so the whole
-/// sweep takes hours; the compact CTest runs a fixed-seed subset.
+///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT,
+///   --parameters prints every member's parameters).
+/// A case costs 0.1-62 s of CPU (docs/diagnosis.md: most of it in cases that run every round, out of
+/// vocabulary), the 85 cases together well under an hour of CPU; the compact CTest runs a fixed-seed subset.
 #include "explanation_cases.hpp"
 
 #include <fmt/core.h>
