@@ -7,7 +7,9 @@
 // found only by the swap step); one out-of-vocabulary case (a microphone ratio drifting with frequency, no single effect halving its gap)
 // called unexplained. The two-effect and out-of-vocabulary cases are single decisive examples, not
 // rates: each costs tens of seconds (docs/diagnosis.md), the rates are the bench's.
+#include "diagnosis/diagnosis_record.hpp"
 #include "explanation_cases.hpp"
+#include "io/diagnosis_file.hpp"
 
 #include <doctest/doctest.h>
 #include <fmt/format.h>
@@ -68,13 +70,15 @@ TEST_SUITE("statistical") {
   // (it mimics the slit's quarter-wave resonance and the plane shift at once); greedy addition alone
   // keeps it and ends structured (frame_resonance + reference_plane + temperature, unexplained). After
   // reference_plane is added, swapping frame_resonance for edge_gap is decisive and leaves the residual
-  // white. About 15 s of CPU.
+  // white. About 15 s of CPU, twice (with 2 threads and with 1, which must give the same bytes).
   TEST_CASE("explanation suite: a first effect that mimics both true ones is swapped out") {
     const auto cases = two_effect_cases();
     const auto c = *std::find_if(cases.begin(), cases.end(), [](const ValidationCase& x) {
       return x.truth == "reference_plane" && x.truth_second == "edge_gap";
     });
-    const auto d = run_case(c);
+    auto request = case_request(c);
+    request.settings.threads = 2;
+    const auto d = diagnosis::run_diagnosis(request);
     CAPTURE(d.verdict.effect);
     REQUIRE_FALSE(d.identification.effects.empty());
     CHECK(d.identification.effects.front().name == "frame_resonance");
@@ -84,6 +88,10 @@ TEST_SUITE("statistical") {
     CHECK(d.verdict.explanation.size() == 2);
     CHECK(d.verdict.white_after);
     CHECK(d.verdict.shrink >= 0.5 * exact_shrink(c, d));
+    // The swaps and the restated steps sample on their own seed streams: the same bytes on one thread.
+    request.settings.threads = 1;
+    CHECK(io::diagnosis_text(diagnosis::diagnosis_record(d)) ==
+          io::diagnosis_text(diagnosis::diagnosis_record(diagnosis::run_diagnosis(request))));
   }
 
   TEST_CASE("explanation suite: a gap outside the vocabulary is unexplained") {
