@@ -16,9 +16,8 @@ static inline ADMITGEN_RT_FT ADMITGEN_RT_FN(vreal)(ADMITGEN_RT_FT x, ADMITGEN_RT
 }
 static inline ADMITGEN_RT_FT ADMITGEN_RT_FN(vxi)(ADMITGEN_RT_FT a, ADMITGEN_RT_FT e, ADMITGEN_RT_FT u, ADMITGEN_RT_FT er,
                                                  ADMITGEN_RT_FT pi, ADMITGEN_RT_FT g) {
-  return ADMITGEN_RT_FI(add_ps)(
-      a, ADMITGEN_RT_FI(add_ps)(ADMITGEN_RT_FI(mul_ps)(er, a),
-                                ADMITGEN_RT_FI(sub_ps)(ADMITGEN_RT_FI(mul_ps)(g, u), ADMITGEN_RT_FI(mul_ps)(pi, e))));
+  return ADMITGEN_RT_FI(add_ps)(ADMITGEN_RT_FI(add_ps)(a, ADMITGEN_RT_FI(mul_ps)(g, u)),
+                                ADMITGEN_RT_FI(sub_ps)(ADMITGEN_RT_FI(mul_ps)(er, a), ADMITGEN_RT_FI(mul_ps)(pi, e)));
 }
 static inline ADMITGEN_RT_FT ADMITGEN_RT_FN(veta)(ADMITGEN_RT_FT a, ADMITGEN_RT_FT e, ADMITGEN_RT_FT er, ADMITGEN_RT_FT pi) {
   return ADMITGEN_RT_FI(add_ps)(e, ADMITGEN_RT_FI(add_ps)(ADMITGEN_RT_FI(mul_ps)(er, e), ADMITGEN_RT_FI(mul_ps)(pi, a)));
