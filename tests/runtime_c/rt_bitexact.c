@@ -31,7 +31,7 @@
 #define RT_STR2(x) #x
 #define RT_STR(x) RT_STR2(x)
 #define N_GOLD 1280
-#define MAX_NODES 1061 /* f32: 16 AVX-512 blocks of 64, one AVX2 block of 32, a scalar tail of 5; fixed: 132 blocks of 8 (AVX2), 66 of 16 (AVX-512) or 265 of 4 (NEON) plus a tail */
+#define MAX_NODES 1061 /* f32 (Q1S1: the x86 small-model form): 33 AVX-512 steps of 32 or 66 AVX2 steps of 16, a scalar tail of 5 (f32_many_states covers an AVX2 step after AVX-512 ones); fixed: 132 blocks of 8 (AVX2), 66 of 16 (AVX-512) or 265 of 4 (NEON) plus a tail */
 #define FRAMES_MANY 24
 #define FRAMES_FEW 400
 #define SLOT_BYTES (64u * 1024u)
