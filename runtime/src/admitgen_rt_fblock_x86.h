@@ -77,15 +77,16 @@ static void ADMITGEN_RT_FN(fblock)(const admitgen_rt_f32 *inst, const float *in,
   }
 }
 
-/* ---- small models: node vectors outermost, every coefficient in a register ----
+/* ---- small models: node vectors outermost, every coefficient in a register (docs/runtime.md, "Kernels") ----
  * A model of at most ADMITGEN_RT_FFIR FIR taps, 2 real poles and 2 pairs (Q0S0 to Q2S2 with any FIR path: what
- * the fit grid emits but its largest orders) runs one pass over the nodes, ADMITGEN_RT_FVH vectors at a time,
- * each vector's whole output (FIR, then the terms in order) formed before the next: nothing is re-read but the
- * states and the past inputs, the ring rows' addresses are computed once per frame, and the loop carries no
- * loop over terms (their counts are constants of one of 9 copies, the FIR length a predictable branch per tap).
- * The multiply pipes then bind it: 15 multiplies per node-sample for Q1S1, at 2 vectors per cycle (Zen 5:
- * 0.15 instead of 0.37 ns per node-sample for the per-term block form below). Same operations in the same
- * order as every other path. */
+ * the fit grid emits but its largest orders), in process and commit, runs one pass over the nodes,
+ * ADMITGEN_RT_FVS vectors at a time, each step's whole output (FIR, then the terms in order) formed before the
+ * next: nothing is re-read but the states and the past inputs, the coefficients are broadcast and the ring
+ * rows' addresses computed once per frame, and the loop carries no loop over terms (their counts are constants
+ * of one of 9 copies, the FIR length a predictable branch per tap). The multiply pipes then bind it: 15
+ * multiplies per node-sample for Q1S1, two vectors per cycle on a Zen 5 (measured 0.17 against 0.38 ns per
+ * node-sample for the per-term block form above, which history and larger models keep). Same operations in
+ * the same order as every other path. */
 #define ADMITGEN_RT_FFIR 8
 #define ADMITGEN_RT_FVS 2 /* vectors per step (AVX2: 4 spill, measured 0.39 against 0.30 ns; AVX-512: 2 = 4) */
 #if defined(__GNUC__) || defined(__clang__)
