@@ -28,7 +28,7 @@ struct EffectContext {
   TubeSetup tube;
   SimulatedSide sim;
   std::optional<TwoMicrophoneChain> chain;  ///< y_sim through the tube (full geometry only)
-  SlitModel slit;                           ///< the edge gap's slit on this grid
+  TabulatedSlitModel slit;                  ///< the edge gap's slit on this grid (tabulated fluid)
 };
 
 namespace {
@@ -256,7 +256,7 @@ std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const
   std::optional<TwoMicrophoneChain> chain;
   if (full_geometry(tube)) chain.emplace(y_sim, f_hz, air, tube.geometry("the chain effects"));
   const auto c =
-      std::make_shared<const EffectContext>(EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), SlitModel(air, f_hz)});
+      std::make_shared<const EffectContext>(EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), TabulatedSlitModel(air, f_hz)});
   const LayeredAbsorber* layered =
       sim.material() ? std::get_if<LayeredAbsorber>(&*sim.material()) : nullptr;
   std::vector<EffectCandidate> out;
