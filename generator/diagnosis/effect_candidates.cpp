@@ -30,6 +30,7 @@ struct EffectContext {
   SimulatedSide sim;
   std::optional<TwoMicrophoneChain> chain;  ///< y_sim through the tube (full geometry only)
   TabulatedSlitModel slit;                  ///< the edge gap's slit on this grid (tabulated fluid)
+  Eigen::ArrayXd sin_ks;                    ///< |sin ks| of the microphones (full geometry only)
 };
 
 namespace {
@@ -90,8 +91,7 @@ bool full_geometry(const TubeSetup& t) { return t.diameter_m && t.spacing_m && t
 
 /// Whether the two-microphone inversion is regular at every frequency (sin ks ≠ 0).
 bool regular_transfer(const EffectContext& c) {
-  const Eigen::ArrayXd sin_ks = (2.0 * EIGEN_PI * c.f * *c.tube.spacing_m / c.air.c0).sin().abs();
-  return (sin_ks > 1e-6).all();
+  return (c.sin_ks > 1e-6).all();
 }
 
 void add_chain_effects(std::vector<EffectCandidate>& out, const ContextPtr& c) {
@@ -133,7 +133,7 @@ EffectCandidate reference_plane(const ContextPtr& c) {
 }
 
 EffectCandidate heteroscedastic_noise(const ContextPtr& c) {
-  const auto shape = [c](const double* t) { return heteroscedastic_std(1.0, t[0], c->air, *c->tube.spacing_m, c->f); };
+  const auto shape = [c](const double* t) { return heteroscedastic_std(1.0, t[0], c->sin_ks); };
   return {"heteroscedastic_noise",
           {{"scale", Shape::uniform, 0.0, 0.5}},
           {},
@@ -343,8 +343,10 @@ std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const
   const Air air = Air::at_celsius(tube.temperature_c);
   std::optional<TwoMicrophoneChain> chain;
   if (full_geometry(tube)) chain.emplace(y_sim, f_hz, air, tube.geometry("the chain effects"));
-  const auto c =
-      std::make_shared<const EffectContext>(EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), TabulatedSlitModel(air, f_hz)});
+  Eigen::ArrayXd sin_ks;
+  if (full_geometry(tube)) sin_ks = microphone_sin_ks(air, *tube.spacing_m, f_hz);
+  const auto c = std::make_shared<const EffectContext>(
+      EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), TabulatedSlitModel(air, f_hz), std::move(sin_ks)});
   const LayeredAbsorber* layered =
       sim.material() ? std::get_if<LayeredAbsorber>(&*sim.material()) : nullptr;
   std::vector<EffectCandidate> out;
