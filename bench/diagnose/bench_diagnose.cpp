@@ -14,7 +14,8 @@
 ///              single case only, skipped with --no-baseline);
 ///   1 thread   quadrature for 0-1 parameters, early stop;
 ///   N threads  the same on 2 threads and on N (results identical; checked here).
-/// Usage: bench_diagnose [--points N] [--threads N] [--case single|combined|both] [--no-baseline]
+/// Usage: bench_diagnose [--points N] [--threads N] [--case single|combined|both] [--no-baseline] [--once]
+///   (--once: only the run on --threads threads, with its per-candidate table: CPU figures on a busy machine)
 #include "diagnosis/diagnosis.hpp"
 #include "diagnosis/diagnosis_record.hpp"
 #include "inference/evidence.hpp"
@@ -100,7 +101,15 @@ std::string json(const diagnosis::Diagnosis& d) { return io::diagnosis_text(diag
 
 /// The new method on 1, 2 and `threads` threads (wall times; results checked identical). Returns whether
 /// they are.
-bool bench_new(const diagnosis::DiagnosisRequest& request, int threads, const Timed* baseline) {
+bool bench_new(const diagnosis::DiagnosisRequest& request, int threads, const Timed* baseline, bool once) {
+  if (once) {
+    const Timed t = run(request, threads, false);
+    fmt::print("\n## quadrature for 0-1 parameters, early stop, {} threads\n", threads);
+    print_diagnosis(t.result);
+    fmt::print("wall time {:.2f} s\n", t.seconds);
+    std::fflush(stdout);
+    return true;
+  }
   const Timed one = run(request, 1, false);
   fmt::print("\n## quadrature for 0-1 parameters, early stop, 1 thread\n");
   print_diagnosis(one.result);
@@ -130,9 +139,10 @@ bool bench_new(const diagnosis::DiagnosisRequest& request, int threads, const Ti
 int main(int argc, char** argv) {
   int points = 1000, threads = 0;
   std::string which = "both";
-  bool baseline = true;
+  bool baseline = true, once = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--no-baseline") == 0) baseline = false;
+    else if (std::strcmp(argv[i], "--once") == 0) once = true;
     else if (i + 1 < argc && std::strcmp(argv[i], "--points") == 0) points = std::atoi(argv[++i]);
     else if (i + 1 < argc && std::strcmp(argv[i], "--threads") == 0) threads = std::atoi(argv[++i]);
     else if (i + 1 < argc && std::strcmp(argv[i], "--case") == 0) which = argv[++i];
@@ -144,17 +154,17 @@ int main(int argc, char** argv) {
     fmt::print("\n# single: a frame resonance\n");
     const auto request = bench_case(points, {"frame_resonance:f0_hz=800,q=8,y_peak=0.1"});
     std::optional<Timed> former;
-    if (baseline) {
+    if (baseline && !once) {
       fmt::print("\n## baseline: every candidate sampled, 1 thread, no early stop\n");
       former = run(request, 1, true);
       print_diagnosis(former->result);
     }
-    identical = bench_new(request, threads, former ? &*former : nullptr) && identical;
+    identical = bench_new(request, threads, former ? &*former : nullptr, once) && identical;
   }
   if (which != "single") {
     fmt::print("\n# combined: a microphone spacing error and an edge gap\n");
     const auto request = bench_case(points, {"mic_spacing:delta_m=1mm", "edge_gap:width_m=0.5mm,depth_m=30mm"});
-    identical = bench_new(request, threads, nullptr) && identical;
+    identical = bench_new(request, threads, nullptr, once) && identical;
   }
   return identical ? 0 : 1;
 }
