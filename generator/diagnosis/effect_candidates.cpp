@@ -317,8 +317,7 @@ EffectPrediction compose(const EffectContext& c, const std::vector<EffectCandida
   }
   if (members.back().stage == EffectStage::simulated) out.y = simulated_side(change);
   if (chain && c.chain)
-    out.y = changed ? measure_through_chain(out.y, c.f, c.air, c.tube.geometry("the chain effects"), deviation)
-                    : c.chain->measure(deviation);
+    out.y = changed ? c.chain->measure(out.y, deviation) : c.chain->measure(deviation);
   else if (chain)
     out.y = apply_reference_plane(ReferencePlane{deviation.reference_plane_m}, c.air, c.f, out.y);
   return out;
