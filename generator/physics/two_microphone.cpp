@@ -80,11 +80,17 @@ Eigen::ArrayXcd TwoMicrophoneChain::true_transfer(const Eigen::ArrayXcd& y_true,
                                  x1, x2));
   const Air tube_air = Air::at_celsius(air_.temperature_c + dev.temperature_offset_k);
   const Eigen::ArrayXcd y_tube = y_true * (tube_air.rho_c() / air_.rho_c());
-  if (dev.reference_plane_m == 0.0 && dev.spacing_error_m == 0.0 && dev.temperature_offset_k == 0.0 &&
-      !dev.tube_losses && tube_air.c0 == air_.c0) {
-    // transfer_function with the nominal waves, element by element as it evaluates them.
-    const Eigen::ArrayXcd r = reflection_from_admittance(y_tube);
-    return (out2_ + r * back2_) / (out1_ + r * back1_);
+  if (dev.temperature_offset_k == 0.0 && !dev.tube_losses && tube_air.c0 == air_.c0) {
+    // transfer_function element by element as it evaluates it, with the nominal waves at a microphone
+    // the deviation leaves in place.
+    const Eigen::ArrayXcd r = reflection_from_admittance(y_tube), k = lossless_wavenumber(air_, f_);
+    const auto pressure = [&](double x, bool nominal, const Eigen::ArrayXcd& out,
+                              const Eigen::ArrayXcd& back) -> Eigen::ArrayXcd {
+      if (nominal) return out + r * back;
+      return (kJ * x * k).exp() + r * (-kJ * x * k).exp();
+    };
+    const bool first = dev.reference_plane_m == 0.0, second = first && dev.spacing_error_m == 0.0;
+    return pressure(x2, second, out2_, back2_) / pressure(x1, first, out1_, back1_);
   }
   const Eigen::ArrayXcd k_true =
       dev.tube_losses ? lossy_wavenumber(tube_air, f_, tube_.diameter()) : lossless_wavenumber(tube_air, f_);
