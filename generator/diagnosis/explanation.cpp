@@ -59,7 +59,8 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     }
     if (tried.empty()) break;
     std::vector<EffectResult> results =
-        evaluate_candidates(tried, likelihood, settings, out.joint.log_z, round * candidates.size(), progress);
+        evaluate_contenders(tried, likelihood, settings, out.joint.log_z, round * candidates.size(), progress);
+    out.rounds.push_back(results);
     const std::size_t best = best_of(results);
     const double bf = deciban(results[best].log_z, out.joint.log_z);
     if (bf < kDecisiveDeciban) break;
