@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace admitgen::diagnosis {
@@ -28,7 +29,8 @@ struct EffectContext {
   TubeSetup tube;
   SimulatedSide sim;
   std::optional<TwoMicrophoneChain> chain;  ///< y_sim through the tube (full geometry only)
-  SlitModel slit;                           ///< the edge gap's slit on this grid
+  TabulatedSlitModel slit;                  ///< the edge gap's slit on this grid (tabulated fluid)
+  Eigen::ArrayXd sin_ks;                    ///< |sin ks| of the microphones (full geometry only)
 };
 
 namespace {
@@ -89,8 +91,7 @@ bool full_geometry(const TubeSetup& t) { return t.diameter_m && t.spacing_m && t
 
 /// Whether the two-microphone inversion is regular at every frequency (sin ks ≠ 0).
 bool regular_transfer(const EffectContext& c) {
-  const Eigen::ArrayXd sin_ks = (2.0 * EIGEN_PI * c.f * *c.tube.spacing_m / c.air.c0).sin().abs();
-  return (sin_ks > 1e-6).all();
+  return (c.sin_ks > 1e-6).all();
 }
 
 void add_chain_effects(std::vector<EffectCandidate>& out, const ContextPtr& c) {
@@ -132,7 +133,7 @@ EffectCandidate reference_plane(const ContextPtr& c) {
 }
 
 EffectCandidate heteroscedastic_noise(const ContextPtr& c) {
-  const auto shape = [c](const double* t) { return heteroscedastic_std(1.0, t[0], c->air, *c->tube.spacing_m, c->f); };
+  const auto shape = [c](const double* t) { return heteroscedastic_std(1.0, t[0], c->sin_ks); };
   return {"heteroscedastic_noise",
           {{"scale", Shape::uniform, 0.0, 0.5}},
           {},
@@ -202,10 +203,97 @@ EffectCandidate frequency_scale(const ContextPtr& c, const ParameterPrior& prior
   return e;
 }
 
+/// The simulated side under one simulated-stage member of one parameter θ (a catalogue ratio, an air
+/// gap, a frequency ratio), tabulated on the data grid: a joint candidate that holds such a member
+/// evaluates it tens of thousands of times, and re-evaluating a layered SPEC costs far more than the
+/// other members. y(θ) is smooth in the prior's coordinate v (ln θ for a log-uniform prior, θ for a
+/// uniform one): the table holds y at equally spaced v over the prior, read by 4-point Lagrange
+/// interpolation (one-sided in the end cells). Built on first use from 33 nodes, doubled (the new
+/// nodes are the old midpoints, where the interpolation error of the coarser table is largest) until
+/// every midpoint agrees with the exact side to kSimulatedTableTolerance of the rms simulated
+/// admittance (tested in tests/diagnosis/test_combined_effects.cpp); a side needing more than
+/// kSimulatedTableMaxNodes nodes is not tabulated (evaluated exactly each time).
+class SimulatedTable {
+ public:
+  static constexpr double kSimulatedTableTolerance = 1e-9;
+  static constexpr int kSimulatedTableMaxNodes = 1025;
+
+  SimulatedTable(std::shared_ptr<const EffectContext> c, EffectCandidate member)
+      : c_(std::move(c)), member_(std::move(member)) {}
+
+  /// The simulated side at θ (to the tolerance above).
+  Eigen::ArrayXcd operator()(double theta) const {
+    std::call_once(built_, [this] { build(); });
+    if (nodes_.empty()) return exact(theta);
+    return lookup(member_.priors.front().shape == ParameterPrior::Shape::log_uniform ? std::log(theta) : theta);
+  }
+
+  /// Nodes of the table once built (0 when not tabulated).
+  std::size_t nodes() const {
+    std::call_once(built_, [this] { build(); });
+    return nodes_.size();
+  }
+
+ private:
+  Eigen::ArrayXcd exact(double theta) const {
+    SimulatedChange s = no_change(*c_);
+    member_.change(s, &theta);
+    return simulated(*c_, s);
+  }
+  double theta_at(double v) const {
+    return member_.priors.front().shape == ParameterPrior::Shape::log_uniform ? std::exp(v) : v;
+  }
+  void build() const {
+    const ParameterPrior& p = member_.priors.front();
+    const bool log = p.shape == ParameterPrior::Shape::log_uniform;
+    v_lo_ = log ? std::log(p.lo) : p.lo;
+    const double v_hi = log ? std::log(p.hi) : p.hi;
+    const double scale = std::sqrt(c_->y_sim.abs2().mean());
+    std::vector<Eigen::ArrayXcd> nodes;
+    for (int k = 0; k < 33; ++k) nodes.push_back(exact(theta_at(v_lo_ + (v_hi - v_lo_) * k / 32.0)));
+    while (nodes.size() <= static_cast<std::size_t>(kSimulatedTableMaxNodes)) {
+      nodes_ = std::move(nodes);
+      step_ = (v_hi - v_lo_) / static_cast<double>(nodes_.size() - 1);
+      nodes.clear();
+      double worst = 0.0;
+      for (std::size_t k = 0; k + 1 < nodes_.size(); ++k) {
+        const double v = v_lo_ + (static_cast<double>(k) + 0.5) * step_;
+        Eigen::ArrayXcd mid = exact(theta_at(v));
+        worst = std::max(worst, (lookup(v) - mid).abs().maxCoeff());
+        nodes.push_back(nodes_[k]);
+        nodes.push_back(std::move(mid));
+      }
+      nodes.push_back(nodes_.back());
+      if (worst <= kSimulatedTableTolerance * scale) return;
+    }
+    nodes_.clear();  // too wiggly to tabulate within the budget: exact every time
+  }
+  Eigen::ArrayXcd lookup(double v) const {
+    const double q = std::clamp((v - v_lo_) / step_, 0.0, static_cast<double>(nodes_.size() - 1));
+    const Eigen::Index k = std::clamp<Eigen::Index>(static_cast<Eigen::Index>(q) - 1, 0,
+                                                    static_cast<Eigen::Index>(nodes_.size()) - 4);
+    const double t = q - static_cast<double>(k);  // nodes k … k + 3 sit at t = 0 … 3
+    const double w0 = -(t - 1) * (t - 2) * (t - 3) / 6, w1 = t * (t - 2) * (t - 3) / 2,
+                 w2 = -t * (t - 1) * (t - 3) / 2, w3 = t * (t - 1) * (t - 2) / 6;
+    const auto at = [&](Eigen::Index j) -> const Eigen::ArrayXcd& { return nodes_[static_cast<std::size_t>(j)]; };
+    return w0 * at(k) + w1 * at(k + 1) + w2 * at(k + 2) + w3 * at(k + 3);
+  }
+
+  std::shared_ptr<const EffectContext> c_;
+  EffectCandidate member_;
+  mutable std::once_flag built_;
+  mutable std::vector<Eigen::ArrayXcd> nodes_;
+  mutable double v_lo_ = 0.0, step_ = 1.0;
+};
+
 /// The composition of combine_effects; `members` sorted by stage, then candidate order, so the simulated
 /// side is changed first, then the sample effects act on it, then the chain measures it.
 EffectPrediction compose(const EffectContext& c, const std::vector<EffectCandidate>& members,
-                         const std::vector<std::size_t>& offset, const double* theta) {
+                         const std::vector<std::size_t>& offset, const SimulatedTable* table, const double* theta) {
+  // With a table, the one simulated member is read from it (the table holds that member's change).
+  const auto simulated_side = [&](const SimulatedChange& change) {
+    return table ? (*table)(theta[offset.front()]) : simulated(c, change);
+  };
   SimulatedChange change = no_change(c);
   bool changed = false, chain = false;
   ChainDeviation deviation;
@@ -215,7 +303,7 @@ EffectPrediction compose(const EffectContext& c, const std::vector<EffectCandida
     const EffectCandidate& m = members[k];
     const double* t = theta + offset[k];
     if (m.stage != EffectStage::simulated && k > 0 && members[k - 1].stage == EffectStage::simulated)
-      out.y = simulated(c, change);
+      out.y = simulated_side(change);
     switch (m.stage) {
       case EffectStage::simulated: m.change(change, t); break;
       case EffectStage::sample: out.y = m.apply(out.y, t); break;
@@ -227,10 +315,9 @@ EffectPrediction compose(const EffectContext& c, const std::vector<EffectCandida
     }
     changed = changed || m.stage == EffectStage::simulated || m.stage == EffectStage::sample;
   }
-  if (members.back().stage == EffectStage::simulated) out.y = simulated(c, change);
+  if (members.back().stage == EffectStage::simulated) out.y = simulated_side(change);
   if (chain && c.chain)
-    out.y = changed ? measure_through_chain(out.y, c.f, c.air, c.tube.geometry("the chain effects"), deviation)
-                    : c.chain->measure(deviation);
+    out.y = changed ? c.chain->measure(out.y, deviation) : c.chain->measure(deviation);
   else if (chain)
     out.y = apply_reference_plane(ReferencePlane{deviation.reference_plane_m}, c.air, c.f, out.y);
   return out;
@@ -255,8 +342,10 @@ std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const
   const Air air = Air::at_celsius(tube.temperature_c);
   std::optional<TwoMicrophoneChain> chain;
   if (full_geometry(tube)) chain.emplace(y_sim, f_hz, air, tube.geometry("the chain effects"));
-  const auto c =
-      std::make_shared<const EffectContext>(EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), SlitModel(air, f_hz)});
+  Eigen::ArrayXd sin_ks;
+  if (full_geometry(tube)) sin_ks = microphone_sin_ks(air, *tube.spacing_m, f_hz);
+  const auto c = std::make_shared<const EffectContext>(
+      EffectContext{f_hz, y_sim, air, tube, sim, std::move(chain), TabulatedSlitModel(air, f_hz), std::move(sin_ks)});
   const LayeredAbsorber* layered =
       sim.material() ? std::get_if<LayeredAbsorber>(&*sim.material()) : nullptr;
   std::vector<EffectCandidate> out;
@@ -301,7 +390,13 @@ EffectCandidate combine_effects(const std::vector<const EffectCandidate*>& membe
     offset.push_back(start[k]);
   }
   out.stage = sorted.front().stage;
-  out.predict = [c = out.context, sorted, offset](const double* t) { return compose(*c, sorted, offset, t); };
+  // One simulated member of one parameter (sorted first): tabulated (SimulatedTable above).
+  std::shared_ptr<const SimulatedTable> table;
+  if (sorted[0].stage == EffectStage::simulated && sorted[0].priors.size() == 1 && sorted[1].stage != EffectStage::simulated)
+    table = std::make_shared<const SimulatedTable>(out.context, sorted[0]);
+  out.predict = [c = out.context, sorted, offset, table](const double* t) {
+    return compose(*c, sorted, offset, table.get(), t);
+  };
   return out;
 }
 

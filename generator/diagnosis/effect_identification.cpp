@@ -156,6 +156,11 @@ EffectResult start_result(const EffectCandidate& e) {
   return r;
 }
 
+/// evaluate_candidates with candidate i on seed stream streams[i].
+std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
+                                   const IdentificationSettings& settings, double log_z_floor,
+                                   const std::vector<std::uint64_t>& streams, Progress& progress);
+
 }  // namespace
 
 Model effect_model(const EffectCandidate& e, const EffectLikelihood& likelihood) {
@@ -178,6 +183,10 @@ std::string describe_evidence_methods(const IdentificationSettings& s) {
                         "and 2 max ln L(live) - ln L(contour) stays {:g} deciban below the best evidence of the "
                         "quadrature effects and no effect",
                         s.early_stop_deciban);
+  if (s.screen_live < s.sampler.live)
+    text += fmt::format("; a round of the combined search screens its joint effects by nested sampling with {} live "
+                        "points and runs in full those within {:g} deciban of the best or of decisive",
+                        s.screen_live, kScreenDeciban);
   return text;
 }
 
@@ -188,6 +197,16 @@ bool early_stop_allowed(const NestedStatus& s, int live) { return s.log_x <= -2.
 std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>& candidates,
                                               const EffectLikelihood& likelihood, const IdentificationSettings& settings,
                                               double log_z_floor, std::uint64_t first_stream, Progress& progress) {
+  std::vector<std::uint64_t> streams(candidates.size());
+  std::iota(streams.begin(), streams.end(), first_stream);
+  return evaluate(candidates, likelihood, settings, log_z_floor, streams, progress);
+}
+
+namespace {
+
+std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
+                                   const IdentificationSettings& settings, double log_z_floor,
+                                   const std::vector<std::uint64_t>& streams, Progress& progress) {
   std::vector<EffectResult> results(candidates.size());
   std::vector<std::size_t> cheap, sampled;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -218,7 +237,7 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
     timed(i, [&](EffectResult& r) {
       r.method = "nested_sampling";
       NestedSettings sampler = settings.sampler;
-      sampler.seed = derive_seed(settings.sampler.seed, first_stream + i);
+      sampler.seed = derive_seed(settings.sampler.seed, streams[i]);
       NestedStopFn stop;
       if (settings.early_stop_deciban > 0.0)
         stop = [&](const NestedStatus& s) {
@@ -241,6 +260,42 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
     quadrature ? by_quadrature(i) : by_sampling(i);
   });
   progress.finish();
+  return results;
+}
+
+}  // namespace
+
+std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>& candidates,
+                                              const EffectLikelihood& likelihood, const IdentificationSettings& settings,
+                                              double log_z_reference, std::uint64_t first_stream, Progress& progress) {
+  if (candidates.size() < 2 || settings.screen_live >= settings.sampler.live)
+    return evaluate_candidates(candidates, likelihood, settings, log_z_reference, first_stream, progress);
+  IdentificationSettings screening = settings;
+  screening.sampler.live = std::max(settings.screen_live, 2);
+  std::vector<EffectResult> results =
+      evaluate_candidates(candidates, likelihood, screening, log_z_reference, first_stream, progress);
+  double target = log_z_reference + kDecisiveDeciban * std::log(10.0) / 10.0;
+  for (const auto& r : results) target = std::max(target, r.log_z);
+  std::vector<std::size_t> contenders;
+  std::vector<EffectCandidate> full;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (results[i].method == "nested_sampling") results[i].method = "screened";
+    if (deciban(results[i].log_z, target) < -kScreenDeciban) continue;
+    contenders.push_back(i);
+    full.push_back(candidates[i]);
+  }
+  // Each contender keeps its seed stream first_stream + i, as without screening.
+  std::vector<std::uint64_t> streams;
+  for (std::size_t i : contenders) streams.push_back(first_stream + i);
+  std::vector<EffectResult> runs = evaluate(full, likelihood, settings, log_z_reference, streams, progress);
+  for (std::size_t k = 0; k < contenders.size(); ++k) {
+    EffectResult& r = runs[k];
+    const EffectResult& screened = results[contenders[k]];
+    r.seconds += screened.seconds;
+    r.cpu_seconds += screened.cpu_seconds;
+    r.calls += screened.calls;
+    results[contenders[k]] = std::move(r);
+  }
   return results;
 }
 

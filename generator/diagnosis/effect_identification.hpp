@@ -50,6 +50,10 @@ inline constexpr double kDecisiveDeciban = 20.0;
 /// decides the margin).
 inline constexpr double kEarlyStopDeciban = 100.0;
 
+/// A screened joint candidate this far below the best and below decisive is not run in full
+/// (evaluate_contenders): 5 standard errors of a screening run's ln Z.
+inline constexpr double kScreenDeciban = 20.0;
+
 struct IdentificationSettings {
   /// Effects have 0-3 parameters on a fixed simulated admittance, so a hundred live points already give
   /// ln Z to ±√(H/n) ≈ 0.4 nat (2 dB), far inside the 20 dB decision margin. seed is the user seed.
@@ -58,6 +62,9 @@ struct IdentificationSettings {
   bool use_quadrature = true;  ///< false: 1-parameter candidates are sampled too (the former method)
   int threads = 0;  ///< candidates run in parallel on this many threads; 0 = all cores
   double early_stop_deciban = kEarlyStopDeciban;  ///< 0: never stop early
+  /// Live points of the screening runs of the combined search (evaluate_contenders); ≥ sampler.live:
+  /// no screening. A quarter of the default.
+  int screen_live = 25;
 
   static NestedSettings effect_sampler() {
     NestedSettings s;
@@ -117,6 +124,20 @@ std::string describe_evidence_methods(const IdentificationSettings& settings);
 std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>& candidates,
                                               const EffectLikelihood& likelihood, const IdentificationSettings& settings,
                                               double log_z_floor, std::uint64_t first_stream, Progress& progress);
+
+/// A round of the combined search needs one answer: which candidate has the largest evidence, and whether
+/// it beats `log_z_reference` (the explanation without it) by kDecisiveDeciban. Every candidate is first
+/// screened by a run with settings.screen_live live points (a quarter of the cost; ln Z to about
+/// √(H/live) ≈ 1 nat, 4 dB); those whose screened evidence is within kScreenDeciban of the larger of
+/// the best screened evidence and log_z_reference + kDecisiveDeciban are then run as evaluate_candidates
+/// runs them, on the same seed streams, and their results replace the screened ones (method
+/// "nested_sampling"; the others keep method "screened"). A candidate left screened is more than 20 dB
+/// (5 standard errors of the screening) below the best and below decisive, so it could neither be
+/// picked nor make the pick decisive. With fewer candidates than two, or screen_live ≥ live, every
+/// candidate runs in full.
+std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>& candidates,
+                                              const EffectLikelihood& likelihood, const IdentificationSettings& settings,
+                                              double log_z_reference, std::uint64_t first_stream, Progress& progress);
 
 /// Fills r's gap fields (gap_after at the max-likelihood ϑ, shrink, explained, band) for `candidate`.
 void fill_gap(EffectResult& r, const EffectCandidate& candidate, const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real,

@@ -97,6 +97,7 @@ void swap_round(const Search& search, std::uint64_t round, Explanation& out) {
   if (swapped.empty()) return;
   const std::uint64_t first_stream = round * kMaxExplanationEffects * n;
   std::vector<EffectResult> results = search.evaluate(swapped, out.joint.log_z, first_stream);
+  out.rounds.push_back(results);
   const std::size_t best = best_of(results);
   if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
   results[best].candidate = swapped[best].back();
@@ -146,7 +147,8 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     }
     if (tried.empty()) break;
     std::vector<EffectResult> results =
-        evaluate_candidates(tried, search.likelihood, settings, out.joint.log_z, round * n, progress);
+        evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z, round * n, progress);
+    out.rounds.push_back(results);
     const std::size_t best = best_of(results);
     const double bf = deciban(results[best].log_z, out.joint.log_z);
     if (bf < kDecisiveDeciban) break;

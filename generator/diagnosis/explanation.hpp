@@ -44,6 +44,8 @@ struct Explanation {
   /// The accepted members fitted jointly; priors and parameters concatenated in step order (gap fields
   /// and Bayes factor against no effect filled). Meaningless when steps is empty.
   EffectResult joint;
+  /// Every joint candidate each round evaluated, in candidate order (costs for benchmarks; not written).
+  std::vector<std::vector<EffectResult>> rounds;
   /// The parameter summaries of member k: joint.parameters[offset(k) …].
   std::vector<ParameterSummary> member_parameters(std::size_t k, const std::vector<EffectCandidate>& candidates) const;
 };

@@ -48,6 +48,14 @@ cd tan_complex(cd w) {
   return {ratio.imag(), -ratio.real()};
 }
 
+/// ε = 1 − (1 − 2w/d)², the fraction of the tube's cross-section the slit takes.
+double edge_gap_fraction(const EdgeGap& e, double tube_diameter_m) {
+  if (!(2.0 * e.width_m < tube_diameter_m))
+    throw InputError(fmt::format("edge_gap width_m {} m must be less than half the tube diameter {} m", e.width_m,
+                                 tube_diameter_m));
+  return 1.0 - std::pow(1.0 - 2.0 * e.width_m / tube_diameter_m, 2);
+}
+
 constexpr const char* kNames =
     "none, reference_plane, mic_spacing, mic_mismatch, temperature, tube_losses, edge_gap, frame_resonance, "
     "fractional_order, air_gap, heteroscedastic_noise";
@@ -162,26 +170,72 @@ SlitModel::SlitModel(const Air& air, const Eigen::ArrayXd& f_hz)
     : air_(air), omega_(2.0 * EIGEN_PI * f_hz), half_root_v_((omega_ / (2.0 * air.nu())).sqrt()),
       half_root_t_(half_root_v_ * std::sqrt(air.prandtl)) {}
 
-Eigen::ArrayXcd SlitModel::admittance(double width_m, double depth_m) const {
-  // σ_v = (w/2)√(jω/ν) = x_v(1 + j) with x_v = (w/2)√(ω/2ν), likewise σ_t with Pr.
+SlitModel::Fluid SlitModel::fluid(double x_v, double x_t) const {
+  // σ_v = (w/2)√(jω/ν) = x_v(1 + j), likewise σ_t = x_t(1 + j) with x_t = (w/2)√(ω Pr/2ν).
   const double gamma_p0 = air_.gamma * air_.p0;
+  const cd fv = tanh_over_argument_diagonal(x_v);
+  const cd ft = tanh_over_argument_diagonal(x_t);
+  const cd rho = divide(air_.rho0, 1.0 - fv);
+  const cd bulk = divide(gamma_p0, 1.0 + (air_.gamma - 1.0) * ft);
+  const cd zc = std::sqrt(rho * bulk);
+  return {zc, divide(zc, bulk)};  // √(ρ/K) = √(ρK)/K
+}
+
+cd SlitModel::admittance_from(const Fluid& fluid, Eigen::Index i, double depth_m) const {
+  const cd k = omega_[i] * fluid.slowness;
+  return divide(air_.rho_c() * kJ * tan_complex(k * depth_m), fluid.characteristic);  // ρ0c0/(−j Z_c cot kh)
+}
+
+Eigen::ArrayXcd SlitModel::admittance(double width_m, double depth_m) const {
   Eigen::ArrayXcd y(omega_.size());
-  for (Eigen::Index i = 0; i < omega_.size(); ++i) {
-    const cd fv = tanh_over_argument_diagonal(0.5 * width_m * half_root_v_[i]);
-    const cd ft = tanh_over_argument_diagonal(0.5 * width_m * half_root_t_[i]);
-    const cd rho = divide(air_.rho0, 1.0 - fv);
-    const cd bulk = divide(gamma_p0, 1.0 + (air_.gamma - 1.0) * ft);
-    const cd zc = std::sqrt(rho * bulk), k = omega_[i] * divide(zc, bulk);  // ω√(ρ/K) = ω√(ρK)/K
-    y[i] = divide(air_.rho_c() * kJ * tan_complex(k * depth_m), zc);  // ρ0c0/(−j Z_c cot kh)
-  }
+  for (Eigen::Index i = 0; i < omega_.size(); ++i)
+    y[i] = admittance_from(fluid(0.5 * width_m * half_root_v_[i], 0.5 * width_m * half_root_t_[i]), i, depth_m);
   return y;
 }
 
 Eigen::ArrayXcd SlitModel::edge_gap(const EdgeGap& e, double tube_diameter_m, const Eigen::ArrayXcd& y) const {
-  if (!(2.0 * e.width_m < tube_diameter_m))
-    throw InputError(fmt::format("edge_gap width_m {} m must be less than half the tube diameter {} m", e.width_m,
-                                 tube_diameter_m));
-  const double eps = 1.0 - std::pow(1.0 - 2.0 * e.width_m / tube_diameter_m, 2);
+  const double eps = edge_gap_fraction(e, tube_diameter_m);
+  return (1.0 - eps) * y + eps * admittance(e.width_m, e.depth_m);
+}
+
+TabulatedSlitModel::TabulatedSlitModel(const Air& air, const Eigen::ArrayXd& f_hz)
+    : SlitModel(air, f_hz),
+      step_(std::log(kSlitTableHigh / kSlitTableLow) / (kSlitTableNodes - 1)),
+      u_(kSlitTableNodes + 2),
+      v_(kSlitTableNodes + 2),
+      log_half_root_v_(half_root_v_.log()) {
+  for (Eigen::Index k = 0; k < u_.size(); ++k) {
+    const double x = kSlitTableLow * std::exp(static_cast<double>(k - 1) * step_);
+    const Fluid f = fluid(x, x * std::sqrt(air_.prandtl));
+    u_[k] = divide(air_.rho_c(), f.characteristic) * (1.0 + 1.0 / x);
+    v_[k] = f.slowness * (x / (1.0 + x));
+  }
+}
+
+Eigen::ArrayXcd TabulatedSlitModel::admittance(double width_m, double depth_m) const {
+  const double s0 = std::log(0.5 * width_m) - std::log(kSlitTableLow);
+  Eigen::ArrayXcd y(omega_.size());
+  for (Eigen::Index i = 0; i < omega_.size(); ++i) {
+    const double q = (s0 + log_half_root_v_[i]) / step_;  // s in steps from the first inner node
+    if (!(q >= 0.0 && q < kSlitTableNodes - 1)) {
+      y[i] = admittance_from(fluid(0.5 * width_m * half_root_v_[i], 0.5 * width_m * half_root_t_[i]), i, depth_m);
+      continue;
+    }
+    const double floor_q = std::floor(q), t = q - floor_q;
+    const Eigen::Index k = static_cast<Eigen::Index>(floor_q) + 1;  // node at or below s; k − 1 … k + 2 used
+    // 4-point Lagrange weights on nodes −1, 0, 1, 2 at t ∈ [0, 1).
+    const double a = t + 1.0, b = t, c = t - 1.0, d = t - 2.0;
+    const double w0 = -b * c * d / 6.0, w1 = a * c * d / 2.0, w2 = -a * b * d / 2.0, w3 = a * b * c / 6.0;
+    const cd u = w0 * u_[k - 1] + w1 * u_[k] + w2 * u_[k + 1] + w3 * u_[k + 2];
+    const cd v = w0 * v_[k - 1] + w1 * v_[k] + w2 * v_[k + 1] + w3 * v_[k + 2];
+    const double x = 0.5 * width_m * half_root_v_[i], ratio = x / (1.0 + x);
+    y[i] = kJ * (u * ratio) * tan_complex(omega_[i] * (v / ratio) * depth_m);
+  }
+  return y;
+}
+
+Eigen::ArrayXcd TabulatedSlitModel::edge_gap(const EdgeGap& e, double tube_diameter_m, const Eigen::ArrayXcd& y) const {
+  const double eps = edge_gap_fraction(e, tube_diameter_m);
   return (1.0 - eps) * y + eps * admittance(e.width_m, e.depth_m);
 }
 

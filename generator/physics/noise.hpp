@@ -21,5 +21,9 @@ Eigen::ArrayXcd complex_gaussian_noise(const Eigen::ArrayXd& std_per_point, Rng&
 /// σ_i of the heteroscedastic form. Throws InputError if a frequency sits where sin ks = 0.
 Eigen::ArrayXd heteroscedastic_std(double sigma, double scale, const Air& air, double spacing_m,
                                    const Eigen::ArrayXd& f_hz);
+/// |sin ks| at f_hz (k = 2πf/c0, s the microphone spacing): what heteroscedastic_std needs of the grid.
+Eigen::ArrayXd microphone_sin_ks(const Air& air, double spacing_m, const Eigen::ArrayXd& f_hz);
+/// heteroscedastic_std from |sin ks| computed once (same values); infinite where sin ks = 0.
+Eigen::ArrayXd heteroscedastic_std(double sigma, double scale, const Eigen::ArrayXd& sin_ks);
 
 }  // namespace admitgen

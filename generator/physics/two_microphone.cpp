@@ -62,10 +62,16 @@ TwoMicrophoneChain::TwoMicrophoneChain(Eigen::ArrayXcd y_true, Eigen::ArrayXd f_
   advance_ = (2.0 * kJ * tube_.mic1_distance() * k).exp();
   h_i_ = (-kJ * tube_.spacing() * k).exp();
   h_r_ = (kJ * tube_.spacing() * k).exp();
-  nominal_ = true_transfer(ChainDeviation{});
+  // As true_transfer computes them for no deviation (x + 0.0 and the same air: the same values).
+  const double x1 = tube_.mic1_distance() + 0.0, x2 = x1 - tube_.spacing() - 0.0;
+  out1_ = (kJ * x1 * k).exp();
+  back1_ = (-kJ * x1 * k).exp();
+  out2_ = (kJ * x2 * k).exp();
+  back2_ = (-kJ * x2 * k).exp();
+  nominal_ = true_transfer(y_true_, ChainDeviation{});
 }
 
-Eigen::ArrayXcd TwoMicrophoneChain::true_transfer(const ChainDeviation& dev) const {
+Eigen::ArrayXcd TwoMicrophoneChain::true_transfer(const Eigen::ArrayXcd& y_true, const ChainDeviation& dev) const {
   const double x1 = tube_.mic1_distance() + dev.reference_plane_m;
   const double x2 = x1 - tube_.spacing() - dev.spacing_error_m;
   if (!(x2 > 0.0 && x2 < x1))
@@ -73,21 +79,41 @@ Eigen::ArrayXcd TwoMicrophoneChain::true_transfer(const ChainDeviation& dev) con
                                  "in front of it, the near one closer",
                                  x1, x2));
   const Air tube_air = Air::at_celsius(air_.temperature_c + dev.temperature_offset_k);
-  const Eigen::ArrayXcd y_tube = y_true_ * (tube_air.rho_c() / air_.rho_c());
+  const Eigen::ArrayXcd y_tube = y_true * (tube_air.rho_c() / air_.rho_c());
+  if (dev.temperature_offset_k == 0.0 && !dev.tube_losses && tube_air.c0 == air_.c0) {
+    // transfer_function element by element as it evaluates it, with the nominal waves at a microphone
+    // the deviation leaves in place.
+    const Eigen::ArrayXcd r = reflection_from_admittance(y_tube), k = lossless_wavenumber(air_, f_);
+    const auto pressure = [&](double x, bool nominal, const Eigen::ArrayXcd& out,
+                              const Eigen::ArrayXcd& back) -> Eigen::ArrayXcd {
+      if (nominal) return out + r * back;
+      return (kJ * x * k).exp() + r * (-kJ * x * k).exp();
+    };
+    const bool first = dev.reference_plane_m == 0.0, second = first && dev.spacing_error_m == 0.0;
+    return pressure(x2, second, out2_, back2_) / pressure(x1, first, out1_, back1_);
+  }
   const Eigen::ArrayXcd k_true =
       dev.tube_losses ? lossy_wavenumber(tube_air, f_, tube_.diameter()) : lossless_wavenumber(tube_air, f_);
   return transfer_function(reflection_from_admittance(y_tube), k_true, x1, x2);
 }
 
-Eigen::ArrayXcd TwoMicrophoneChain::measure(const ChainDeviation& dev) const {
-  const bool only_mic_ratio = dev.reference_plane_m == 0.0 && dev.spacing_error_m == 0.0 &&
-                              dev.temperature_offset_k == 0.0 && !dev.tube_losses;
-  const Eigen::ArrayXcd h12 = dev.mic_ratio * (only_mic_ratio ? nominal_ : true_transfer(dev));
+Eigen::ArrayXcd TwoMicrophoneChain::processed(const Eigen::ArrayXcd& h12) const {
   // ISO 10534-2 eq. 17 (reflection_from_transfer) with the precomputed processing terms, element by
   // element as Eigen evaluates that expression (its exp() keeps it scalar), so the results are the same.
   Eigen::ArrayXcd r(h12.size());
   for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = advance_[i] * (h12[i] - h_i_[i]) / (h_r_[i] - h12[i]);
   return admittance_from_reflection(r);
+}
+
+Eigen::ArrayXcd TwoMicrophoneChain::measure(const ChainDeviation& dev) const {
+  const bool only_mic_ratio = dev.reference_plane_m == 0.0 && dev.spacing_error_m == 0.0 &&
+                              dev.temperature_offset_k == 0.0 && !dev.tube_losses;
+  return processed(dev.mic_ratio * (only_mic_ratio ? nominal_ : true_transfer(y_true_, dev)));
+}
+
+Eigen::ArrayXcd TwoMicrophoneChain::measure(const Eigen::ArrayXcd& y_true, const ChainDeviation& dev) const {
+  ADMITGEN_ENSURE(y_true.size() == f_.size(), "{} admittances for {} frequencies", y_true.size(), f_.size());
+  return processed(dev.mic_ratio * true_transfer(y_true, dev));
 }
 
 FrequencyRange working_range(const Air& air, const TubeGeometry& tube) {

@@ -78,16 +78,24 @@ class TwoMicrophoneChain {
   TwoMicrophoneChain(Eigen::ArrayXcd y_true, Eigen::ArrayXd f_hz, const Air& air, const TubeGeometry& tube);
   /// y as processed for this sample through the deviating chain (throws as measure_through_chain).
   Eigen::ArrayXcd measure(const ChainDeviation& deviation) const;
+  /// Another sample's y_true through the same chain: measure_through_chain(y_true, f_hz, air, tube,
+  /// deviation) with the processing terms of this chain, and the microphones' travelling waves of the
+  /// nominal chain when the deviation leaves positions, temperature and losses alone (same values).
+  Eigen::ArrayXcd measure(const Eigen::ArrayXcd& y_true, const ChainDeviation& deviation) const;
 
  private:
   /// H12 the microphones see through the deviating chain, before the mic ratio.
-  Eigen::ArrayXcd true_transfer(const ChainDeviation& deviation) const;
+  Eigen::ArrayXcd true_transfer(const Eigen::ArrayXcd& y_true, const ChainDeviation& deviation) const;
+  /// The ISO 10534-2 processing of h12 into y.
+  Eigen::ArrayXcd processed(const Eigen::ArrayXcd& h12) const;
 
   Eigen::ArrayXcd y_true_;
   Eigen::ArrayXd f_;
   Air air_;
   TubeGeometry tube_;
   Eigen::ArrayXcd advance_, h_i_, h_r_;  ///< processing: e^{2jkx1}, e^{−jks}, e^{jks} with k = ω/c0
+  /// e^{±jkx} at the nominal microphone positions x1 and x2 = x1 − s (transfer_function's waves)
+  Eigen::ArrayXcd out1_, back1_, out2_, back2_;
   Eigen::ArrayXcd nominal_;              ///< true_transfer of the nominal chain
 };
 

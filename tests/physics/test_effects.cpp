@@ -124,6 +124,32 @@ TEST_CASE("edge_gap: the slit admittance equals the textbook formula with comple
   CHECK(worst <= 1e-9);
 }
 
+TEST_CASE("edge_gap: the tabulated slit fluid gives SlitModel's admittance to 1e-9 relative") {
+  // TabulatedSlitModel interpolates U = (ρ0c0/Z_c)(1 + 1/x) and V = S x/(1 + x) in s = ln x (4096 nodes
+  // over x 0.01-100, h = 2.25e-3) by 4-point Lagrange: error ≤ 0.023 h⁴ max|d⁴/ds⁴| ≈ 6e-13 for
+  // derivatives of order 10 (the e^{−2x} cos 2x ripple of tanh peaks near x ≈ 3-5), then tan(ω S h)
+  // amplifies the error of S by at most the quarter-wave condition ≈ 1e3 of the test above. Tolerance
+  // 1e-9 relative, the same as the exact form's against the textbook one. Grid: as that test, which
+  // covers the edge_gap prior of `diagnose` (w 0.05-3 mm, h 5-200 mm) and x from 0.01 to 200, so both
+  // ends of the table and the exact fallback beyond them are crossed.
+  const Air air = Air::at_celsius(20.0);
+  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(400, std::log(10.0), std::log(12000.0)).exp();
+  const SlitModel exact(air, f);
+  const TabulatedSlitModel table(air, f);
+  double worst = 0.0;
+  for (double w : {2e-5, 5e-5, 1e-4, 3e-4, 1e-3, 3e-3, 5e-3})
+    for (double h : {0.002, 0.02, 0.05, 0.12, 0.3}) {
+      const Eigen::ArrayXcd reference = exact.admittance(w, h), y = table.admittance(w, h);
+      worst = std::max(worst, ((y - reference).abs() / reference.abs()).maxCoeff());
+    }
+  MESSAGE("largest relative difference " << worst);
+  CHECK(worst <= 1e-9);
+  const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(f.size(), cd(0.5, 0.1));
+  const EdgeGap e{1e-3, 0.05};
+  CHECK(((table.edge_gap(e, 0.1, y) - exact.edge_gap(e, 0.1, y)).abs() <= 1e-9 * y.abs()).all());
+  CHECK_THROWS_AS(table.edge_gap(EdgeGap{0.06, 0.05}, 0.1, y), InputError);
+}
+
 TEST_CASE("sample effect sizes of docs/physics.md 5.1 for the reference case (Miki 10 kPa s/m2, 50 mm, d = 100 mm)") {
   // docs/physics.md quotes these sizes (computed with admitgen's air); figures with 1-2 significant digits
   // are matched to ±20 % of the value.

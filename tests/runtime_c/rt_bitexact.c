@@ -31,7 +31,7 @@
 #define RT_STR2(x) #x
 #define RT_STR(x) RT_STR2(x)
 #define N_GOLD 1280
-#define MAX_NODES 1061 /* f32: 16 AVX-512 blocks of 64, one AVX2 block of 32, a scalar tail of 5; fixed: 132 blocks of 8 (AVX2), 66 of 16 (AVX-512) or 265 of 4 (NEON) plus a tail */
+#define MAX_NODES 1061 /* f32 (Q1S1: the x86 small-model form): 33 AVX-512 steps of 32 or 66 AVX2 steps of 16, a scalar tail of 5 (f32_many_states covers an AVX2 step after AVX-512 ones); fixed: 132 blocks of 8 (AVX2), 66 of 16 (AVX-512) or 265 of 4 (NEON) plus a tail */
 #define FRAMES_MANY 24
 #define FRAMES_FEW 400
 #define SLOT_BYTES (64u * 1024u)
@@ -175,13 +175,18 @@ static void f32_accuracy(void) {
 
 /* Models of every shape: no term, one real pole, one pair, and many states (the small-n path shortens its
  * chunks, and beyond ADMITGEN_RT_TRAJ states hands over to the block path); each combination of last recursion
- * pass (none, r, p, rr, rp, pp). 1 node in two calls must equal node 3 of 9 in one call, bit for bit.
- * Synthetic stable coefficients, |z| < 1. */
+ * pass (none, r, p, rr, rp, pp); every copy of the x86 small-model kernel (up to 2 real poles, 2 pairs, 8 FIR
+ * taps) and models just beyond it (3 real poles, 9 taps); FIR paths of 0 to 9 taps. 1 node in two calls must
+ * equal nodes 3, 40 and 52 of 57 in one call, bit for bit (x86-64 with AVX-512: an AVX-512 block, an AVX2 block
+ * and the scalar tail; AVX2 only: two AVX2 blocks and the tail). Synthetic stable coefficients, |z| < 1. */
+#define WIDE 57
 static void f32_many_states(void) {
-  static const int32_t shapes[10][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {59, 0}, {60, 1}, {60, 16}, {60, 64}};
-  static float fir[6] = {0.5f, 0.1f, 0.05f, 0.02f, 0.01f, 0.005f}, real[2 * 60], pair[5 * 64];
-  static float in9[300 * 9], out9[300 * 9];
-  int32_t t, f, sh;
+  static const int32_t shapes[14][3] = {{0, 0, 1}, {1, 0, 6}, {0, 1, 8}, {2, 0, 2}, {1, 1, 6}, {0, 2, 0}, {2, 1, 9},
+                                        {1, 2, 7}, {2, 2, 3}, {3, 0, 6}, {59, 0, 6}, {60, 1, 6}, {60, 16, 5}, {60, 64, 6}};
+  static const int32_t probe[3] = {3, 40, 52};
+  static float fir[9] = {0.5f, 0.1f, 0.05f, 0.02f, 0.01f, 0.005f, -0.004f, 0.003f, -0.002f}, real[2 * 60], pair[5 * 64];
+  static float in_w[300 * WIDE], out_w[300 * WIDE];
+  int32_t t, f, sh, j;
   for (t = 0; t < 60; ++t) {
     real[2 * t] = 0.01f * (float)(t + 1) / 60.0f;
     real[2 * t + 1] = 0.01f;
@@ -193,24 +198,28 @@ static void f32_many_states(void) {
     pair[5 * t + 3] = 0.01f;
     pair[5 * t + 4] = 0.005f;
   }
-  for (f = 0; f < 300 * 9; ++f) in9[f] = INPUT((f * 7) % N_GOLD);
-  for (sh = 0; sh < 10; ++sh) {
-    const int32_t nr = shapes[sh][0], np = shapes[sh][1];
-    const admitgen_rt_model_f32 m = {ADMITGEN_RT_ABI_VERSION, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, 6, nr, np, 0.5f,
+  for (f = 0; f < 300 * WIDE; ++f) in_w[f] = INPUT((f * 7) % N_GOLD);
+  for (sh = 0; sh < 14; ++sh) {
+    const int32_t nr = shapes[sh][0], np = shapes[sh][1], nfir = shapes[sh][2];
+    const admitgen_rt_model_f32 m = {ADMITGEN_RT_ABI_VERSION, 48000, ADMITGEN_RT_METHOD_MATCHED_EXP, nfir, nr, np, 0.5f,
                                      fir, real, pair};
-    admitgen_rt_f32 nine, one;
-    int32_t bad = 0;
-    RT_CHECK(admitgen_rt_init_f32(&nine, &m, 48000, 9, rt_slot(0), SLOT_BYTES) == ADMITGEN_RT_SUCCESS &&
-                 admitgen_rt_init_f32(&one, &m, 48000, 1, rt_slot(1), SLOT_BYTES) == ADMITGEN_RT_SUCCESS,
+    admitgen_rt_f32 wide, one;
+    RT_CHECK(admitgen_rt_init_f32(&wide, &m, 48000, WIDE, rt_slot(0), SLOT_BYTES) == ADMITGEN_RT_SUCCESS,
              "init of the %ld-real, %ld-pair model", (long)nr, (long)np);
-    (void)admitgen_rt_process_f32(&nine, in9, out9, 300, 9);
-    for (f = 0; f < 300; ++f) in_f32[f] = in9[f * 9 + 3];
-    (void)admitgen_rt_process_f32(&one, in_f32, out_a_f32, 77, 1);
-    (void)admitgen_rt_process_f32(&one, in_f32 + 77, out_a_f32 + 77, 223, 1);
-    for (f = 0; f < 300; ++f) bad += out_a_f32[f] != out9[f * 9 + 3];
-    RT_CHECK(bad == 0, "%ld reals, %ld pairs: 1 node differs from node 3 of 9 in %ld frames", (long)nr, (long)np, (long)bad);
+    (void)admitgen_rt_process_f32(&wide, in_w, out_w, 300, WIDE);
+    for (j = 0; j < 3; ++j) {
+      int32_t bad = 0;
+      RT_CHECK(admitgen_rt_init_f32(&one, &m, 48000, 1, rt_slot(1), SLOT_BYTES) == ADMITGEN_RT_SUCCESS, "init of 1 node");
+      for (f = 0; f < 300; ++f) in_f32[f] = in_w[f * WIDE + probe[j]];
+      (void)admitgen_rt_process_f32(&one, in_f32, out_a_f32, 77, 1);
+      (void)admitgen_rt_process_f32(&one, in_f32 + 77, out_a_f32 + 77, 223, 1);
+      for (f = 0; f < 300; ++f) bad += out_a_f32[f] != out_w[f * WIDE + probe[j]];
+      RT_CHECK(bad == 0, "%ld reals, %ld pairs, %ld taps: 1 node differs from node %ld of %d in %ld frames", (long)nr,
+               (long)np, (long)nfir, (long)probe[j], WIDE, (long)bad);
+    }
   }
-  printf("f32: Q0S0 to Q60S64 (every last recursion pass; short chunks; block path): 1 node = node 3 of 9\n");
+  printf("f32: Q0S0 to Q60S64, 0 to 9 FIR taps (every last recursion pass; short chunks; every block kernel): 1 node "
+         "= nodes 3, 40, 52 of %d\n", WIDE);
 }
 #undef RT_FIXED
 #endif

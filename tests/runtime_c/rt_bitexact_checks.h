@@ -141,15 +141,18 @@ static void RT_FN(limit_cycles)(void) {
 
 #endif
 
-/* 6: history = the output of a u = 0 frame, state untouched; commit = one processed frame. */
+/* 6: history = the output of a u = 0 frame, state untouched; commit = one processed frame. 2 nodes: small-n
+ * path; 13: the scalar block; 80 (x86-64): history and process through different vector kernels (f32: the
+ * per-term blocks and the small-model form, AVX-512 and AVX2). */
+#define RT_HC_MAX 80
 static void RT_FN(history_commit)(void) {
-  static const int32_t counts[2] = {2, 13};
+  static const int32_t counts[3] = {2, 13, RT_HC_MAX};
   int32_t c, i, f;
-  for (c = 0; c < 2; ++c) {
+  for (c = 0; c < 3; ++c) {
     const int32_t n = counts[c];
     const size_t bytes = RT_RT(state_bytes)(&MODEL, n);
     INST inst, probe;
-    T hist[16], zero[16], y[16], u[16];
+    T hist[RT_HC_MAX], zero[RT_HC_MAX], y[RT_HC_MAX], u[RT_HC_MAX];
     int ok = 1;
     RT_FN(init)(&inst, n, 0);
     RT_FN(init)(&probe, n, 1);
@@ -170,9 +173,10 @@ static void RT_FN(history_commit)(void) {
     }
     RT_CHECK(ok, "%ld nodes: history/commit differ from process", (long)n);
   }
-  printf("%s: history = output of a zero frame (state untouched), commit = process, 2 and 13 nodes, 300 frames\n",
-         RT_STR(FMT));
+  printf("%s: history = output of a zero frame (state untouched), commit = process, 2, 13 and %d nodes, 300 frames\n",
+         RT_STR(FMT), RT_HC_MAX);
 }
+#undef RT_HC_MAX
 
 static void RT_FN(all)(void) {
   RT_FN(golden_and_blocks)();
