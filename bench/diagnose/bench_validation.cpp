@@ -6,17 +6,22 @@
 /// line per case and the figures the criteria are stated in:
 ///   two effects: both named; combined shrink ≥ half the exact model's;
 ///   material: right parameter, ratio within 30 % in log (|ln r̂ − ln r| ≤ ln 1.3);
-///   out of vocabulary, among the cases no single effect halves (best single shrink < 2): unexplained.
-/// Usage: bench_validation [two|material|oov|all] [--live N] [--threads N] [--stride K] [--from I]
+///   out of vocabulary, among the cases no single effect halves (best single shrink < 2): unexplained
+///   (also among those the exact model halves, i.e. whose gap is more than noise; oov-gaps prints the
+///   exact model's shrink of each case without diagnosing).
+/// Usage: bench_validation [two|material|oov|oov-gaps|all] [--live N] [--threads N] [--stride K]
+///   [--from I] [--only TEXT] [--parameters]
 ///   (default all, 60 live points, all cores, every case; --stride K runs every K-th case of each set,
-///   --from I skips the first I of those).
-/// The combined search makes a case cost 30-170 s on one busy core (docs/diagnosis.md), so the whole
-/// sweep takes hours; the compact CTest runs a fixed-seed subset.
+///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT,
+///   --parameters prints every member's parameters).
+/// A case costs 0.1-62 s of CPU (docs/diagnosis.md: most of it in cases that run every round, out of
+/// vocabulary), the 85 cases together well under an hour of CPU; the compact CTest runs a fixed-seed subset.
 #include "explanation_cases.hpp"
 
 #include <fmt/core.h>
 
 #include <chrono>
+#include <ctime>
 #include <cstring>
 #include <string>
 
@@ -31,20 +36,28 @@ struct Options {
   int threads = 0;
   std::size_t stride = 1;  ///< run every stride-th case of each set (a quicker, still spread-out sample)
   std::size_t from = 0;    ///< of those, start at this one
+  std::string only;        ///< run only the cases whose label contains this text
+  bool parameters = false;  ///< print every member's parameters (posterior means), not only material's
 };
 
 template <class Cases>
-Cases every(Cases cases, std::size_t stride, std::size_t from) {
+Cases every(Cases cases, const Options& o) {
   Cases out;
-  for (std::size_t i = from * stride; i < cases.size(); i += stride) out.push_back(cases[i]);
+  for (std::size_t i = o.from * o.stride; i < cases.size(); i += o.stride)
+    if (cases[i].label.find(o.only) != std::string::npos) out.push_back(cases[i]);
   return out;
 }
 
-std::string explanation_text(const diagnosis::Verdict& v) {
+std::string explanation_text(const diagnosis::Verdict& v, const Options& o) {
   std::string out;
   for (const auto& m : v.explanation) {
     out += (out.empty() ? "" : " + ") + m.effect;
     if (m.effect == "material") out += fmt::format("({}={:.3g})", m.parameters.front().first, m.parameters.front().second);
+    else if (o.parameters) {
+      std::string p;
+      for (const auto& [name, value] : m.parameters) p += fmt::format("{}{}={:.3g}", p.empty() ? "" : ",", name, value);
+      if (!p.empty()) out += "(" + p + ")";
+    }
   }
   return out.empty() ? "-" : out;
 }
@@ -55,68 +68,104 @@ diagnosis::Diagnosis run(const ValidationCase& c, const Options& o) {
   return diagnosis::run_diagnosis(request);
 }
 
-void line(const ValidationCase& c, const diagnosis::Diagnosis& d, const std::string& mark, double seconds) {
-  fmt::print("{:<4} {:<78.78} -> {:<12} [{}] shrink {:.2f} explained {:.3f} white {} best single {:.2f}  {:.1f} s\n",
-             mark, c.label, d.verdict.effect, explanation_text(d.verdict), d.verdict.shrink, d.verdict.explained,
-             d.verdict.white_after ? "yes" : "no", best_single_shrink(d), seconds);
+/// Wall time and the CPU time of all threads of the case (the wall time on an idle machine ≈ CPU / cores).
+struct Timing {
+  double wall = 0.0, cpu = 0.0;
+};
+
+void line(const ValidationCase& c, const diagnosis::Diagnosis& d, const std::string& mark, Timing t, const Options& o) {
+  fmt::print("{:<4} {:<78.78} -> {:<12} [{}] shrink {:.2f} explained {:.3f} white {} best single {:.2f}  {:.1f} s, CPU {:.1f} s\n",
+             mark, c.label, d.verdict.effect, explanation_text(d.verdict, o), d.verdict.shrink, d.verdict.explained,
+             d.verdict.white_after ? "yes" : "no", best_single_shrink(d), t.wall, t.cpu);
   std::fflush(stdout);
 }
 
-double timed(const ValidationCase& c, const Options& o, diagnosis::Diagnosis& d) {
+/// The leading single effects with their Bayes factors against none (why a case went the way it did).
+void leading_singles(const diagnosis::Diagnosis& d) {
+  std::string out;
+  for (std::size_t k = 0; k < std::min<std::size_t>(5, d.identification.effects.size()); ++k) {
+    const auto& e = d.identification.effects[k];
+    out += fmt::format("{}{} {:.0f} dB (shrink {:.2f})", k ? ", " : "", d.candidates[e.candidate].label(),
+                       e.bayes_factor_deciban, e.shrink);
+  }
+  fmt::print("     leading single effects: {}\n", out);
+}
+
+Timing timed(const ValidationCase& c, const Options& o, diagnosis::Diagnosis& d) {
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu = std::clock();  // the process's CPU time, all threads (POSIX)
   d = run(c, o);
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+          static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC};
 }
 
 void two_effects(const Options& o) {
   int both = 0, shrink_ok = 0, n = 0;
-  for (const auto& c : every(two_effect_cases(), o.stride, o.from)) {
+  for (const auto& c : every(two_effect_cases(), o)) {
     diagnosis::Diagnosis d;
-    const double s = timed(c, o, d);
+    const Timing s = timed(c, o, d);
     const bool named = explains(d.verdict, c.truth) && explains(d.verdict, c.truth_second);
     const double exact = exact_shrink(c, d);
     const bool half = d.verdict.shrink >= 0.5 * exact;
     ++n;
     both += named;
     shrink_ok += named && half;
-    line(c, d, named ? (half ? "ok" : "ok~") : "MISS", s);
+    line(c, d, named ? (half ? "ok" : "ok~") : "MISS", s, o);
     fmt::print("     exact model shrink {:.2f}\n", exact);
+    if (!named) leading_singles(d);
   }
   fmt::print("two effects: both named {}/{} = {:.0f} %; both named with shrink >= half the exact model's {}/{} = {:.0f} %\n",
-             both, n, 100.0 * both / n, shrink_ok, n, 100.0 * shrink_ok / n);
+             both, n, n ? 100.0 * both / n : 0.0, shrink_ok, n, n ? 100.0 * shrink_ok / n : 0.0);
 }
 
 void material(const Options& o) {
   int right = 0, n = 0;
-  for (const auto& c : every(material_cases(), o.stride, o.from)) {
+  for (const auto& c : every(material_cases(), o)) {
     diagnosis::Diagnosis d;
-    const double s = timed(c, o, d);
+    const Timing s = timed(c, o, d);
     const double r = material_ratio(d.verdict, c.parameter);
     const bool ok = d.verdict.effect != "unexplained" && r > 0.0 && std::abs(std::log(r / c.ratio)) <= std::log(1.3);
     ++n;
     right += ok;
-    line(c, d, ok ? "ok" : "MISS", s);
+    line(c, d, ok ? "ok" : "MISS", s, o);
   }
-  fmt::print("material: right parameter, ratio within 30 % in log {}/{} = {:.0f} %\n", right, n, 100.0 * right / n);
+  fmt::print("material: right parameter, ratio within 30 % in log {}/{} = {:.0f} %\n", right, n, n ? 100.0 * right / n : 0.0);
 }
 
+/// Out of vocabulary: counted by the criterion when no single effect halves the gap (best single shrink
+/// < 2); of those, the ones whose gap is real, i.e. the exact model of the case would halve it (exact
+/// shrink ≥ 2; below, most of the gap is noise, which no model can take away).
 void out_of_vocabulary(const Options& o) {
-  int unexplained = 0, n = 0, all_unexplained = 0, all = 0;
-  for (const auto& c : every(out_of_vocabulary_cases(), o.stride, o.from)) {
+  int unexplained = 0, n = 0, real_unexplained = 0, real = 0, all_unexplained = 0, all = 0;
+  for (const auto& c : every(out_of_vocabulary_cases(), o)) {
     diagnosis::Diagnosis d;
-    const double s = timed(c, o, d);
+    const Timing s = timed(c, o, d);
     const bool counted = best_single_shrink(d) < 2.0;
+    const double exact = exact_shrink(c, d);
     const bool ok = d.verdict.effect == "unexplained";
     ++all;
     all_unexplained += ok;
     if (counted) {
       ++n;
       unexplained += ok;
+      if (exact >= 2.0) {
+        ++real;
+        real_unexplained += ok;
+      }
     }
-    line(c, d, counted ? (ok ? "ok" : "MISS") : (ok ? "(ok)" : "(-)"), s);
+    line(c, d, counted ? (ok ? "ok" : "MISS") : (ok ? "(ok)" : "(-)"), s, o);
+    fmt::print("     exact model shrink {:.2f}\n", exact);
   }
-  fmt::print("out of vocabulary, no single effect halves the gap: unexplained {}/{} = {:.0f} %; all cases {}/{}\n",
-             unexplained, n, n ? 100.0 * unexplained / n : 0.0, all_unexplained, all);
+  fmt::print("out of vocabulary, no single effect halves the gap: unexplained {}/{} = {:.0f} %; of those with a real gap "
+             "(exact model shrink >= 2) {}/{} = {:.0f} %; all cases {}/{}\n",
+             unexplained, n, n ? 100.0 * unexplained / n : 0.0, real_unexplained, real,
+             real ? 100.0 * real_unexplained / real : 0.0, all_unexplained, all);
+}
+
+/// The exact model's shrink of every out-of-vocabulary case, without diagnosing (seconds).
+void out_of_vocabulary_gaps(const Options& o) {
+  for (const auto& c : every(out_of_vocabulary_cases(), o))
+    fmt::print("{:<90.90} exact model shrink {:.2f}\n", c.label, exact_shrink(c));
 }
 
 }  // namespace
@@ -128,10 +177,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) o.threads = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--from") && i + 1 < argc) o.from = static_cast<std::size_t>(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--stride") && i + 1 < argc) o.stride = static_cast<std::size_t>(std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) o.only = argv[++i];
+    else if (!std::strcmp(argv[i], "--parameters")) o.parameters = true;
     else o.set = argv[i];
   }
   if (o.set == "two" || o.set == "all") two_effects(o);
   if (o.set == "material" || o.set == "all") material(o);
   if (o.set == "oov" || o.set == "all") out_of_vocabulary(o);
+  if (o.set == "oov-gaps") out_of_vocabulary_gaps(o);
   return 0;
 }

@@ -103,8 +103,9 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       "  admitgen diagnose --real measured.csv --sim 'miki(sigma=10000, d=50mm)' --tube-diameter 0.1 \\\n"
       "      --mic-spacing 0.05 --mic-distance 0.1 --out diag\n"
       "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
-      "Decision: none unless an effect reaches 20 dB against no effect; then effects are added while each gains\n"
-      "20 dB (fitted jointly); unexplained if the residual of that explanation is still structured.");
+      "Decision: none unless an effect reaches 20 dB against no effect (unexplained if the gap is structured);\n"
+      "then effects are added while each gains 20 dB (fitted jointly), an earlier one swapped for another when\n"
+      "that gains 20 dB; unexplained if the residual of that explanation is still structured.");
   sub->add_option("--real,-r", cmd->real, "Measured admittance (CSV, read with the data options)")->required();
   auto* sim = sub->add_option("--sim,-s", cmd->sim,
                               "Simulated admittance: a CSV (read with the data options, each overridden by its "

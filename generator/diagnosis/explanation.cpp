@@ -17,6 +17,94 @@ std::size_t best_of(const std::vector<EffectResult>& results) {
   return best;
 }
 
+bool holds(const std::vector<ExplanationStep>& steps, std::size_t candidate) {
+  return std::any_of(steps.begin(), steps.end(),
+                     [candidate](const ExplanationStep& s) { return s.candidate == candidate; });
+}
+
+/// The candidates of `steps`, in step order.
+std::vector<const EffectCandidate*> member_candidates(const std::vector<ExplanationStep>& steps,
+                                                     const std::vector<EffectCandidate>& candidates) {
+  std::vector<const EffectCandidate*> out;
+  for (const auto& s : steps) out.push_back(&candidates[s.candidate]);
+  return out;
+}
+
+/// The search's state and the inputs every round shares.
+struct Search {
+  const Eigen::ArrayXd& f_hz;
+  const Eigen::ArrayXcd& y_real;
+  const Gap& gap_before;
+  const std::vector<EffectCandidate>& candidates;
+  const std::vector<EffectResult>& singles;
+  const IdentificationSettings& settings;
+  Progress& progress;
+  const EffectLikelihood likelihood;
+  double log_z_none = 0.0;
+
+  /// Jointly fitted models of candidate lists, on the seed streams from first_stream on.
+  std::vector<EffectResult> evaluate(const std::vector<std::vector<std::size_t>>& models, double log_z_floor,
+                                     std::uint64_t first_stream) const {
+    if (models.empty()) return {};
+    std::vector<EffectCandidate> tried;
+    for (const auto& m : models) {
+      std::vector<const EffectCandidate*> with;
+      for (const std::size_t i : m) with.push_back(&candidates[i]);
+      tried.push_back(combine_effects(with));
+    }
+    std::vector<EffectResult> out =
+        evaluate_candidates(tried, likelihood, settings, log_z_floor, first_stream, progress);
+    for (std::size_t k = 0; k < out.size(); ++k) fill_gap(out[k], tried[k], f_hz, y_real, gap_before);
+    return out;
+  }
+
+  /// The steps of the explanation `members` (in that order) restated after a swap: member k carries the
+  /// Bayes factor and the shrink of the first k + 1 members against the first k. Prefixes of one member
+  /// are the single effects; longer proper prefixes are evaluated on the streams from first_stream on.
+  std::vector<ExplanationStep> restate(const std::vector<std::size_t>& members, const EffectResult& joint,
+                                       std::uint64_t first_stream) const {
+    std::vector<std::vector<std::size_t>> longer;
+    for (std::size_t k = 2; k < members.size(); ++k)
+      longer.emplace_back(members.begin(), members.begin() + static_cast<std::ptrdiff_t>(k));
+    const std::vector<EffectResult> evaluated = evaluate(longer, log_z_none, first_stream);
+    std::vector<const EffectResult*> prefix{&singles[members.front()]};
+    for (const auto& r : evaluated) prefix.push_back(&r);
+    prefix.push_back(&joint);
+    std::vector<ExplanationStep> out{{members.front(), deciban(prefix[0]->log_z, log_z_none), prefix[0]->shrink}};
+    for (std::size_t k = 1; k < members.size(); ++k)
+      out.push_back({members[k], deciban(prefix[k]->log_z, prefix[k - 1]->log_z),
+                     prefix[k - 1]->gap_after.total / prefix[k]->gap_after.total});
+    return out;
+  }
+};
+
+/// The swap step after round `round` accepted a member and the residual is still structured: every
+/// earlier member in turn replaced by every candidate not in the explanation (the others and their
+/// order kept, all refitted jointly); the best swap is kept when it is decisive (≥ 20 dB) against the
+/// explanation as it stands. Swaps sample on the streams kMax·n·round …; the restated steps on the
+/// (kMax − 1)·n streams after those, so the search stays independent of the thread count.
+void swap_round(const Search& search, std::uint64_t round, Explanation& out) {
+  const std::size_t n = search.candidates.size();
+  std::vector<std::size_t> members;
+  for (const auto& s : out.steps) members.push_back(s.candidate);
+  std::vector<std::vector<std::size_t>> swapped;
+  for (std::size_t j = 0; j + 1 < members.size(); ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (holds(out.steps, i)) continue;
+      swapped.push_back(members);
+      swapped.back()[j] = i;
+    }
+  if (swapped.empty()) return;
+  const std::uint64_t first_stream = round * kMaxExplanationEffects * n;
+  std::vector<EffectResult> results = search.evaluate(swapped, out.joint.log_z, first_stream);
+  out.rounds.push_back(results);
+  const std::size_t best = best_of(results);
+  if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
+  results[best].candidate = swapped[best].back();
+  out.steps = search.restate(swapped[best], results[best], first_stream + (kMaxExplanationEffects - 1) * n);
+  out.joint = results[best];
+}
+
 }  // namespace
 
 std::vector<ParameterSummary> Explanation::member_parameters(std::size_t k,
@@ -32,34 +120,34 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
                     const std::vector<EffectCandidate>& candidates, const Identification& identification,
                     const IdentificationSettings& settings, Progress& progress) {
   Explanation out;
-  const EffectLikelihood likelihood(y_real);
-  const double log_z_none = identification.log_z_none;
   std::vector<EffectResult> singles(candidates.size());
   for (const auto& r : identification.effects) singles[r.candidate] = r;
+  const Search search{f_hz, y_real, gap_before, candidates, singles, settings, progress,
+                      EffectLikelihood(y_real), identification.log_z_none};
+  const double log_z_none = identification.log_z_none;
   if (singles.empty()) return out;
+  const std::size_t n = candidates.size();
   const std::size_t first = best_of(singles);
   if (deciban(singles[first].log_z, log_z_none) < kDecisiveDeciban) return out;
   out.steps.push_back({first, deciban(singles[first].log_z, log_z_none), singles[first].shrink});
   out.joint = singles[first];
-  std::vector<const EffectCandidate*> members{&candidates[first]};
   for (std::uint64_t round = 1; out.steps.size() < kMaxExplanationEffects; ++round) {
     // A white residual leaves no structure in the mean; only the noise shape, which the lag-1 test
     // cannot see, may still be missing.
     const bool white = out.joint.gap_after.whiteness.white;
     std::vector<std::size_t> added;
     std::vector<EffectCandidate> tried;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (std::any_of(out.steps.begin(), out.steps.end(), [i](const ExplanationStep& s) { return s.candidate == i; }))
-        continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (holds(out.steps, i)) continue;
       if (white && candidates[i].stage != EffectStage::noise) continue;
-      std::vector<const EffectCandidate*> with = members;
+      std::vector<const EffectCandidate*> with = member_candidates(out.steps, candidates);
       with.push_back(&candidates[i]);
       added.push_back(i);
       tried.push_back(combine_effects(with));
     }
     if (tried.empty()) break;
     std::vector<EffectResult> results =
-        evaluate_contenders(tried, likelihood, settings, out.joint.log_z, round * candidates.size(), progress);
+        evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z, round * n, progress);
     out.rounds.push_back(results);
     const std::size_t best = best_of(results);
     const double bf = deciban(results[best].log_z, out.joint.log_z);
@@ -68,7 +156,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     fill_gap(results[best], tried[best], f_hz, y_real, gap_before);
     out.steps.push_back({added[best], bf, out.joint.gap_after.total / results[best].gap_after.total});
     out.joint = results[best];
-    members.push_back(&candidates[added[best]]);
+    if (!out.joint.gap_after.whiteness.white) swap_round(search, round, out);
   }
   out.joint.bayes_factor_deciban = deciban(out.joint.log_z, log_z_none);
   return out;

@@ -10,11 +10,16 @@
 ///   kMaxExplanationEffects members. A white residual has no structure left in its mean, but a noise
 ///   shape (heteroscedastic_noise) does not show in the lag-1 test: with a white residual the round
 ///   still tries the noise-stage effects, and only them.
+///   swap step: after an addition that leaves the residual structured, every earlier member in turn is
+///   replaced by every candidate not in the explanation (all refitted jointly); the best swap is kept if
+///   it is decisive (≥ 20 dB) against the explanation as it stands, at most one per round. It undoes a
+///   first member that mimics two true ones, which pure addition cannot.
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
 /// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
 /// only fits noise is not decisive. Round r samples on the seed streams r·n + i (n candidates), after
-/// the single effects' 0 … n − 1, so the search is deterministic whatever the thread count.
+/// the single effects' 0 … n − 1, the swaps after round r on kMax·n·r + i and the steps restated after a
+/// swap on kMax·n·r + (kMax − 1)·n + i, so the search is deterministic whatever the thread count.
 #pragma once
 
 #include "diagnosis/effect_identification.hpp"
@@ -29,8 +34,9 @@ inline constexpr std::size_t kMaxExplanationEffects = 3;
 
 struct ExplanationStep {
   std::size_t candidate = 0;          ///< index into the candidates
-  double bayes_factor_deciban = 0.0;  ///< of the explanation with this member against the one without it
-  double shrink_added = 1.0;          ///< gap without this member / gap with it (the others refitted jointly)
+  /// Of the first k + 1 members against the first k (this member is the k-th, from 0), each fitted jointly.
+  double bayes_factor_deciban = 0.0;
+  double shrink_added = 1.0;  ///< gap of the first k members / gap of the first k + 1
 };
 
 struct Explanation {

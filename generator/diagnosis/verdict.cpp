@@ -12,12 +12,18 @@ Verdict decide(const Gap& gap, const Identification& id, const Explanation& expl
   Verdict v;
   v.band = gap.bands[gap.worst].band;
   v.white_after = gap.whiteness.white;
-  if (id.effects.empty()) return v;
+  // No decisive effect: the gap is noise when its residual is white, real but outside the tested effects
+  // when it is structured (e.g. an absorption dip no effect of the vocabulary can make).
+  const auto no_explanation = [&v] {
+    if (!v.white_after) v.effect = "unexplained";
+    return v;
+  };
+  if (id.effects.empty()) return no_explanation();
   const EffectResult& best = id.effects.front();
   v.bayes_factor_deciban = best.bayes_factor_deciban;
   v.margin_deciban = id.effects.size() > 1 ? best.bayes_factor_deciban - id.effects[1].bayes_factor_deciban
                                            : std::numeric_limits<double>::infinity();
-  if (best.bayes_factor_deciban < kDecisiveDeciban || explanation.steps.empty()) return v;
+  if (best.bayes_factor_deciban < kDecisiveDeciban || explanation.steps.empty()) return no_explanation();
   for (std::size_t k = 0; k < explanation.steps.size(); ++k) {
     const ExplanationStep& step = explanation.steps[k];
     const EffectCandidate& c = candidates[step.candidate];
@@ -37,11 +43,13 @@ Verdict decide(const Gap& gap, const Identification& id, const Explanation& expl
 
 std::string describe_decision_rule() {
   return fmt::format(
-      "none unless the effect with the largest Bayes factor against no effect reaches {0:g} deciban (odds 100:1); "
+      "none unless the effect with the largest Bayes factor against no effect reaches {0:g} deciban (odds 100:1) "
+      "(unexplained instead of none when the gap's residual is structured, lag-1 |z| >= 3); "
       "then the explanation grown from it by greedy forward selection (each added effect fitted jointly and at least "
       "{0:g} deciban better than the explanation without it; stop when none is, when the residual is white, or at "
       "{1} effects); unexplained when that explanation leaves the residual structured (lag-1 |z| >= 3), else the "
-      "first effect of the explanation",
+      "first effect of the explanation; with a swap step after each addition that leaves structure (an earlier member "
+      "replaced by another effect when that is {0:g} deciban better)",
       kDecisiveDeciban, kMaxExplanationEffects);
 }
 

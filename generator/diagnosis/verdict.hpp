@@ -3,7 +3,9 @@
 /// The decision rule of `diagnose`, stated once:
 ///
 ///   Let e* be the effect with the largest Bayes factor BF against no effect (effect_identification).
-///   If BF(e*) < 20 deciban (odds 100 : 1, "decisive" on Jeffreys' scale) the verdict is `none`.
+///   If BF(e*) < 20 deciban (odds 100 : 1, "decisive" on Jeffreys' scale) the verdict is `none` when
+///   the gap's own residual is white, and `unexplained` with an empty explanation when it is structured
+///   (a real gap that no effect of the vocabulary moves at all).
 ///   Otherwise the explanation E grown from e* (explanation.hpp) is the verdict's explanation, and
 ///   the verdict is `unexplained` when E leaves the residual structured (the lag-1 test of
 ///   residual_whiteness.hpp fails, |z| ≥ 3); else it is e* (the primary effect, E's first member).
@@ -16,7 +18,7 @@
 /// say how much of the gap it accounts for.
 ///
 /// The band of the verdict is the band e* explains most (largest drop of g_b²); for `none` it is the
-/// worst band of the gap. shrink = gap before / gap after over the whole data (1 for `none`).
+/// worst band of the gap. shrink = gap before / gap after over the whole data (1 with no explanation).
 /// Decisive support does not mean the effect is the whole story: on real data the residual is rarely
 /// white, so an effect can be decisively better than none and still explain little; `explained` and
 /// `white_after` say how much is left.
@@ -39,8 +41,8 @@ namespace admitgen::diagnosis {
 struct VerdictMember {
   std::string effect;                                      ///< documented name ("material" for a catalogue parameter)
   std::vector<std::pair<std::string, double>> parameters;  ///< posterior means of the joint fit, then fixed values
-  double bayes_factor_deciban = 0.0;                       ///< against the explanation without it
-  double shrink_added = 1.0;                               ///< gap without it / gap with it
+  double bayes_factor_deciban = 0.0;                       ///< the members up to it against those before it
+  double shrink_added = 1.0;                               ///< gap of those before it / gap with it
 };
 
 struct Verdict {

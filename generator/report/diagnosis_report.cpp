@@ -195,6 +195,14 @@ std::string verdict_sentence(const DiagnosisRecord& d) {
         "so the gap of {} is left unexplained.",
         d.effects[0].effect, number(d.effects[0].log_bayes_factor_deciban, 3), number(d.gap.total, 3));
   }
+  if (v.effect == "unexplained" && v.explanation.empty())
+    return fmt::format(
+        "The gap of {} is real but unexplained: its residual is structured, and no tested effect is decisively supported "
+        "({}), so the cause lies outside the tested effects.",
+        number(d.gap.total, 3),
+        d.effects.empty() ? std::string("none was tested")
+                          : fmt::format("the best, {}, reaches {} dB against no effect; the rule asks for 20 dB",
+                                        d.effects[0].effect, number(d.effects[0].log_bayes_factor_deciban, 3)));
   std::string members;
   for (std::size_t k = 0; k < v.explanation.size(); ++k)
     members += (k == 0 ? "" : k + 1 == v.explanation.size() ? " and " : ", ") + explanation_member_text(v.explanation[k]);

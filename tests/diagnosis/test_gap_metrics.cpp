@@ -82,7 +82,12 @@ TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none, unexplained whe
   a.gap_after = measure_gap(f, y, y, rms_level(y));  // zero residual: white
   id.effects = {a};
   Explanation e;
-  CHECK(decide(gap, id, e, candidates).effect == "none");
+  // 19 dB is not decisive: unexplained, since the gap (a 10 % offset, lag-1 correlation 1) is structured;
+  // none when the gap is white (noise only).
+  CHECK(decide(gap, id, e, candidates).effect == "unexplained");
+  CHECK(decide(gap, id, e, candidates).explanation.empty());
+  const Gap white_gap = measure_gap(f, y, y, rms_level(y));
+  CHECK(decide(white_gap, id, e, candidates).effect == "none");
   id.effects[0].bayes_factor_deciban = 25.0;
   e.steps = {{0, 25.0, 4.0}};
   e.joint = a;
@@ -99,7 +104,8 @@ TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none, unexplained whe
   CHECK(u.effect == "unexplained");
   CHECK(u.explanation.size() == 1);  // the best attempt
   CHECK_FALSE(u.white_after);
-  CHECK(decide(gap, Identification{}, Explanation{}, candidates).effect == "none");
+  CHECK(decide(white_gap, Identification{}, Explanation{}, candidates).effect == "none");
+  CHECK(decide(gap, Identification{}, Explanation{}, candidates).effect == "unexplained");
 }
 
 }  // namespace admitgen::test
