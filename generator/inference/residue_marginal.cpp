@@ -2,6 +2,7 @@
 #include "inference/residue_marginal.hpp"
 
 #include "core/errors.hpp"
+#include "inference/box_least_squares.hpp"
 #include "inference/pole_space.hpp"
 #include "inference/student_t.hpp"
 #include "model/residue_basis.hpp"
@@ -152,6 +153,30 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   // probability P(v_jᵀr ∈ v_jᵀ·box), vᵀ·box = [Σ min(v_k lo_k, v_k hi_k), Σ max(…)], is an upper bound of
   // P_box; their product P_× accounts for every degenerate direction at once (two or more coinciding
   // poles) and is what the sampler uses, clamped to [P_lo, P_up].
+  // The supporting half-space at the box-constrained minimiser y* of S (docs/method.md, "The box mass the
+  // sampler uses"): in Jacobi-scaled coordinates y = D⁻¹r, with d = M̃(y* − ŷ), the box lies in
+  // {dᵀ(y − ŷ) ≥ c_h}, c_h = Σ_k min(d_k a_k, d_k b_k) − dᵀŷ (a, b the scaled box), and dᵀ(y − ŷ) is a univariate
+  // t of scale √(S_min/ν · dᵀM̃⁻¹d) = √(S_min/ν · (y* − ŷ)ᵀd). Valid for any y* in the box; at the true
+  // minimiser c_h = (y* − ŷ)ᵀd = S(r*) − S_min and the bound P(T ≥ √(ν(S(r*) − S_min)/S_min)) accounts for
+  // every violated face at once.
+  if (sum_outside > 0.0) {
+    m_scaled_ = scaled_;  // M̃ (scaled_ is reused below)
+    box_a_ = lo_.cwiseQuotient(c.scale);
+    box_b_ = hi_.cwiseQuotient(c.scale);
+    const Eigen::VectorXd y_star = box_least_squares(m_scaled_, mean_scaled_, box_a_, box_b_);
+    const Eigen::VectorXd delta = y_star - mean_scaled_;
+    const Eigen::VectorXd d = m_scaled_ * delta;
+    const double q = delta.dot(d);
+    if (q > 0.0) {
+      double c_h = -d.dot(mean_scaled_);
+      for (Eigen::Index k = 0; k < p_; ++k) c_h += std::min(d[k] * box_a_[k], d[k] * box_b_[k]);
+      const double z = c_h / std::sqrt(c.s_min * q / c.nu);
+      if (z > 0.0) {
+        const double inside = tail(z);
+        log_min_inside = std::min(log_min_inside, inside > 0.0 ? std::log(inside) : tail_.log_upper_bound(z));
+      }
+    }
+  }
   int cut = 0;  // directions whose slab holds less than 1 − 1e-12 of the t
   double log_product = 0.0;
   // When no coordinate marginal reaches a face (every tail beyond the negligible quantile is exactly 0),

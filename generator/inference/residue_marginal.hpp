@@ -87,6 +87,8 @@ class ResidueMarginal {
   mutable Eigen::MatrixXd box_cov_;
   mutable Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_;
   mutable Eigen::ArrayXd dp_, dm_, inv_;
+  mutable Eigen::MatrixXd m_scaled_;         ///< M̃ for the box-constrained minimum
+  mutable Eigen::VectorXd box_a_, box_b_;  ///< the box in Jacobi-scaled coordinates
   mutable ResidueConditional c_;
 };
 
