@@ -135,7 +135,10 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     out.reweighted_ess_ratio = effective_sample_size(weight * rho) / effective_sample_size(weight);
     for (std::size_t i = 0; i < poles.size(); ++i) run.log_weight[i] += std::log(rho[static_cast<Eigen::Index>(i)]);
     run.log_z += out.truncation_correction;
-    run.log_z_error = std::hypot(run.log_z_error, out.truncation_correction_error);
+    // The reweighted points carry the evidence with fewer effective samples: the sampling error √(H/n)
+    // grows as for n·ratio points (a conservative allowance; docs/method.md, "Tolerance and fallback").
+    run.log_z_error = std::hypot(run.log_z_error / std::sqrt(std::min(out.reweighted_ess_ratio, 1.0)),
+                                 out.truncation_correction_error);
   } else {
     out.reweighted_ess_ratio = 0.0;
   }

@@ -7,13 +7,13 @@
  *
  * Continuous model (time dependence e^{+jwt}; G = rho c v_n / p normalised admittance, v_n into the wall):
  *   G(s) = G_inf + sum_q A_q/(lambda_q + s) + sum_s [(B_s + jC_s)/(alpha_s + j beta_s + s) + (B_s - jC_s)/(alpha_s - j beta_s + s)]
- *   G_inf = 0.48619190853089367
- *   A_1 = 23022.87164779888
- *   lambda_1 = 6675.2116347503925
- *   B_1 = -8674.48114623287
- *   C_1 = -996.8131302286175
- *   alpha_1 = 3596.049494821632
- *   beta_1 = 2058.3586317048103
+ *   G_inf = 0.9825969127231009
+ *   A_1 = -28782.59559973759
+ *   lambda_1 = 12837.708784129021
+ *   B_1 = 9274.238948364347
+ *   C_1 = -1059.2780937989432
+ *   alpha_1 = 5839.482107024578
+ *   beta_1 = 6412.154075998358
  *
  * Discretisation (method "matched exponential, refitted numerators", ADMITGEN_RT_METHOD_MATCHED_EXP):
  *   every pole keeps its exact image z = e^{-aT} (as PLRC; L-stable); residues, direct term and a short FIR
@@ -64,25 +64,25 @@
 #define WALL_48000_Q31_HAS_FS_48000 1
 
 /* ---- fs = 48000 Hz ------------------------------------------------------------------------------------
- * refit: max |H - G|/|G| at the data frequencies = 6.5e-06 (plain PLRC coefficients: 0.00226)
- * passivity of H: Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive
+ * refit: max |H - G|/|G| at the data frequencies = 6.78e-06 (plain PLRC coefficients: 0.00091)
+ * passivity of H: Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); refit constrained to Re H >= 0, 1 constraint round(s)
  * terms: 3 FIR taps, 1 real poles, 1 pairs; folded into the FIR path: none
- * L1 norm of the emitted impulse response 1.60264; tail to -120 dB: 188 samples
- * output scaling: y_q31 = y * 2^-1; output table exponent y_exp = 4, acc_shift = 28
- * zero input after any excitation decays to exactly 0 within 296 samples
+ * L1 norm of the emitted impulse response 1.87682; tail to -120 dB: 117 samples
+ * output scaling: y_q31 = y * 2^-1; output table exponent y_exp = 3, acc_shift = 29
+ * zero input after any excitation decays to exactly 0 within 184 samples
  */
 static const int32_t wall_48000_q31_48000_fir[3] = {
-  54814598, /* d_0 */
-  2802482, /* d_1 */
-  -771019, /* d_2 */
+  302350303, /* d_0 */
+  -10540518, /* d_1 */
+  3137481, /* d_2 */
 };
 static const int32_t wall_48000_q31_48000_real[3] = {
-  1115232889, 2, 495878365, /* lambda = 6675.21 1/s (1062.39 Hz), lambda T = 0.1391 */
+  2015826909, 2, -686065320, /* lambda = 12837.7 1/s (2043.18 Hz), lambda T = 0.2675 */
 };
 static const int32_t wall_48000_q31_48000_pair[6] = {
-  -627349650, -341664777, 620022812, 2, -672097455, 77237039, /* alpha = 3596.05, beta = 2058.36 1/s (327.598 Hz), alpha T = 0.07492 */
+  -525857985, -506518879, 491975530, 1, 905539875, 103417897, /* alpha = 5839.48, beta = 6412.15 1/s (1020.53 Hz), alpha T = 0.1217 */
 };
-#define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 296
+#define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 184
 #define WALL_48000_Q31_48000_OUT_SHIFT 1
 static const admitgen_rt_model_q31 wall_48000_q31_48000 = {
   ADMITGEN_RT_FIELD(abi_version) 1u,
@@ -92,7 +92,7 @@ static const admitgen_rt_model_q31 wall_48000_q31_48000 = {
   ADMITGEN_RT_FIELD(n_real) 1,
   ADMITGEN_RT_FIELD(n_pair) 1,
   ADMITGEN_RT_FIELD(out_shift) 1,
-  ADMITGEN_RT_FIELD(acc_shift) 28,
+  ADMITGEN_RT_FIELD(acc_shift) 29,
   ADMITGEN_RT_FIELD(fir) wall_48000_q31_48000_fir,
   ADMITGEN_RT_FIELD(real) wall_48000_q31_48000_real,
   ADMITGEN_RT_FIELD(pair) wall_48000_q31_48000_pair};
@@ -110,26 +110,26 @@ static inline const admitgen_rt_model_q31 *wall_48000_q31_model(int32_t fs_hz) {
 #define WALL_48000_Q31_Q 1
 #define WALL_48000_Q31_S 1
 static const double wall_48000_q31_theta[7] = {
-  0.48619190853089367, /* G_inf */
-  23022.87164779888, /* A_1 */
-  6675.2116347503925, /* lambda_1 */
-  -8674.48114623287, /* B_1 */
-  -996.8131302286175, /* C_1 */
-  3596.049494821632, /* alpha_1 */
-  2058.3586317048103 /* beta_1 */
+  0.9825969127231009, /* G_inf */
+  -28782.59559973759, /* A_1 */
+  12837.708784129021, /* lambda_1 */
+  9274.238948364347, /* B_1 */
+  -1059.2780937989432, /* C_1 */
+  5839.482107024578, /* alpha_1 */
+  6412.154075998358 /* beta_1 */
 };
 static const double wall_48000_q31_48000_ref_fir[3] = {
-  0.40840057944562214,
-  0.020880119838637436,
-  -0.005744535679106654,
+  1.126342650428919,
+  -0.039266490245214045,
+  0.01168802709372103,
 };
 static const double wall_48000_q31_48000_ref_real[2] = {
-  0.12983019573088392, 3.694581722611875,
+  0.23467313839381432, -2.5557924812602852,
 };
 static const double wall_48000_q31_48000_ref_pair[5] = {
-  -0.07303311139396658, -0.03977501500856221, 0.07218015520744453, -5.0075162609526025, 0.5754607866128498,
+  -0.12243585321209617, -0.11793311668167729, 0.11454697937279827, 3.3733989113835925, 0.3852616889322075,
 };
-#define WALL_48000_Q31_48000_REF_H0 0.5266255467167069
+#define WALL_48000_Q31_48000_REF_H0 0.9129794632867305
 #endif
 
 /* Band absorption from the continuous model, for engines that take material absorption instead of a filter:
@@ -137,54 +137,54 @@ static const double wall_48000_q31_48000_ref_pair[5] = {
  * mean over the band (IEC 61260 base-10 bands). */
 #define WALL_48000_Q31_N_OCTAVE 10
 static const float wall_48000_q31_octave[10][3] = {
-  { 31.622776f, 0.21462446f, 0.34236178f }, /* 22-45 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.19670837f, 0.31527412f }, /* 45-89 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.1370701f, 0.21927486f }, /* 89-178 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.08319969f, 0.11186675f }, /* 178-355 Hz, outside the data: model extrapolation */
-  { 501.18723f, 0.52177733f, 0.50936675f }, /* 355-708 Hz */
-  { 1000.0f, 0.9402478f, 0.84849685f }, /* 708-1413 Hz */
-  { 1995.2623f, 0.988402f, 0.9227603f }, /* 1413-2818 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.9361894f, 0.9325428f }, /* 2818-5623 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.8987632f, 0.93453014f }, /* 5623-11220 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.88544905f, 0.9354916f }, /* 11220-22387 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.0064931056f, 0.011969469f }, /* 22-45 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.025356108f, 0.04313543f }, /* 45-89 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.09388238f, 0.13836323f }, /* 89-178 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.2941805f, 0.3528098f }, /* 178-355 Hz, outside the data: model extrapolation */
+  { 501.18723f, 0.64763653f, 0.63830656f }, /* 355-708 Hz */
+  { 1000.0f, 0.934811f, 0.84121f }, /* 708-1413 Hz */
+  { 1995.2623f, 0.98079634f, 0.9367446f }, /* 1413-2818 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.965892f, 0.9319546f }, /* 2818-5623 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.9881835f, 0.91681886f }, /* 5623-11220 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9968211f, 0.91367996f }, /* 11220-22387 Hz, outside the data: model extrapolation */
 };
 #define WALL_48000_Q31_N_THIRD_OCTAVE 30
 static const float wall_48000_q31_third_octave[30][3] = {
-  { 25.118864f, 0.21717852f, 0.34613973f }, /* 22-28 Hz, outside the data: model extrapolation */
-  { 31.622776f, 0.2150338f, 0.34297514f }, /* 28-35 Hz, outside the data: model extrapolation */
-  { 39.81072f, 0.2116598f, 0.33796856f }, /* 35-45 Hz, outside the data: model extrapolation */
-  { 50.118725f, 0.20637642f, 0.33006015f }, /* 45-56 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.19816664f, 0.31760862f }, /* 56-71 Hz, outside the data: model extrapolation */
-  { 79.43282f, 0.18557766f, 0.2981465f }, /* 71-89 Hz, outside the data: model extrapolation */
-  { 100.0f, 0.16672815f, 0.26824427f }, /* 89-112 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.13976187f, 0.22416663f }, /* 112-141 Hz, outside the data: model extrapolation */
-  { 158.48932f, 0.10471409f, 0.16540246f }, /* 141-178 Hz, outside the data: model extrapolation */
-  { 199.52623f, 0.06897056f, 0.1046014f }, /* 178-224 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.058290597f, 0.081108354f }, /* 224-282 Hz, outside the data: model extrapolation */
-  { 316.22775f, 0.12240812f, 0.14996897f }, /* 282-355 Hz */
-  { 398.10718f, 0.2958522f, 0.319932f }, /* 355-447 Hz */
-  { 501.18723f, 0.53119445f, 0.52221334f }, /* 447-562 Hz */
-  { 630.95734f, 0.738272f, 0.6859318f }, /* 562-708 Hz */
-  { 794.32825f, 0.8765533f, 0.7934722f }, /* 708-891 Hz */
-  { 1000.0f, 0.9541198f, 0.8576845f }, /* 891-1122 Hz */
-  { 1258.9254f, 0.9900283f, 0.89430577f }, /* 1122-1413 Hz */
-  { 1584.8932f, 0.99910635f, 0.9143131f }, /* 1413-1778 Hz */
-  { 1995.2623f, 0.9914698f, 0.92456454f }, /* 1778-2239 Hz, outside the data: model extrapolation */
-  { 2511.8865f, 0.9746206f, 0.92939764f }, /* 2239-2818 Hz, outside the data: model extrapolation */
-  { 3162.2776f, 0.9544467f, 0.93156546f }, /* 2818-3548 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.935138f, 0.9326572f }, /* 3548-4467 Hz, outside the data: model extrapolation */
-  { 5011.8726f, 0.91898626f, 0.9334052f }, /* 4467-5623 Hz, outside the data: model extrapolation */
-  { 6309.573f, 0.90666175f, 0.9340349f }, /* 5623-7079 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.8978387f, 0.9345674f }, /* 7079-8913 Hz, outside the data: model extrapolation */
-  { 10000.0f, 0.8917918f, 0.934988f }, /* 8913-11220 Hz, outside the data: model extrapolation */
-  { 12589.254f, 0.88776666f, 0.93529814f }, /* 11220-14125 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.8851383f, 0.9355151f }, /* 14125-17783 Hz, outside the data: model extrapolation */
-  { 19952.623f, 0.8834431f, 0.93566155f }, /* 17783-22387 Hz, outside the data: model extrapolation */
+  { 25.118864f, 0.0038342178f, 0.0072262823f }, /* 22-28 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.006064721f, 0.011252569f }, /* 28-35 Hz, outside the data: model extrapolation */
+  { 39.81072f, 0.009581696f, 0.017431738f }, /* 35-45 Hz, outside the data: model extrapolation */
+  { 50.118725f, 0.015110639f, 0.02682226f }, /* 45-56 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.023761986f, 0.04090911f }, /* 56-71 Hz, outside the data: model extrapolation */
+  { 79.43282f, 0.03720056f, 0.06168158f }, /* 71-89 Hz, outside the data: model extrapolation */
+  { 100.0f, 0.057840534f, 0.091626935f }, /* 89-112 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.08899718f, 0.13353106f }, /* 112-141 Hz, outside the data: model extrapolation */
+  { 158.48932f, 0.13482383f, 0.18994558f }, /* 141-178 Hz, outside the data: model extrapolation */
+  { 199.52623f, 0.19972304f, 0.26223278f }, /* 178-224 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.2868806f, 0.34933713f }, /* 224-282 Hz, outside the data: model extrapolation */
+  { 316.22775f, 0.39595792f, 0.44686884f }, /* 282-355 Hz */
+  { 398.10718f, 0.521013f, 0.54739606f }, /* 355-447 Hz */
+  { 501.18723f, 0.65063435f, 0.6424042f }, /* 447-562 Hz */
+  { 630.95734f, 0.77125394f, 0.7251084f }, /* 562-708 Hz */
+  { 794.32825f, 0.8716314f, 0.7924205f }, /* 708-891 Hz */
+  { 1000.0f, 0.9450099f, 0.84505594f }, /* 891-1122 Hz */
+  { 1258.9254f, 0.9877621f, 0.8861423f }, /* 1122-1413 Hz */
+  { 1584.8932f, 0.9979917f, 0.91881996f }, /* 1413-1778 Hz */
+  { 1995.2623f, 0.9819932f, 0.9421081f }, /* 1778-2239 Hz, outside the data: model extrapolation */
+  { 2511.8865f, 0.9623996f, 0.9492921f }, /* 2239-2818 Hz, outside the data: model extrapolation */
+  { 3162.2776f, 0.9578639f, 0.94156164f }, /* 2818-3548 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.965031f, 0.9308975f }, /* 3548-4467 Hz, outside the data: model extrapolation */
+  { 5011.8726f, 0.97478515f, 0.92340624f }, /* 4467-5623 Hz, outside the data: model extrapolation */
+  { 6309.573f, 0.9829547f, 0.91899055f }, /* 5623-7079 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.98882085f, 0.9164652f }, /* 7079-8913 Hz, outside the data: model extrapolation */
+  { 10000.0f, 0.99277306f, 0.915002f }, /* 8913-11220 Hz, outside the data: model extrapolation */
+  { 12589.254f, 0.9953572f, 0.9141355f }, /* 11220-14125 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9970214f, 0.9136125f }, /* 14125-17783 Hz, outside the data: model extrapolation */
+  { 19952.623f, 0.9980841f, 0.91329205f }, /* 17783-22387 Hz, outside the data: model extrapolation */
 };
 
 /* Machine-readable description of exactly the coefficients above (schema admitgen.emit/1), read by
  * admitgen check:
-admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q31","format":"q31","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q1S1","estimate":"passive","continuous":{"names":["G_inf","A_1","lambda_1","B_1","C_1","alpha_1","beta_1"],"theta":[0.48619190853089367,23022.87164779888,6675.2116347503925,-8674.48114623287,-996.8131302286175,3596.049494821632,2058.3586317048103]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":6.496135296895674e-06,"plrc_max_rel_error":0.002263699449490574,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.40840057944562214,0.020880119838637436,-0.005744535679106654],"real":[[0.12983019573088392,3.694581722611875]],"pair":[[-0.07303311139396658,-0.03977501500856221,0.07218015520744453,-5.0075162609526025,0.5754607866128498]]},"q31":{"bits":31,"out_shift":1,"y_exp":4,"acc_shift":28,"l1_norm":1.6026429173633976,"zero_decay_bound":296,"fir":[54814598,2802482,-771019],"real":[[1115232889,2,495878365]],"pair":[[-627349650,-341664777,620022812,2,-672097455,77237039]]}}]} admitgen:end
+admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q31","format":"q31","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q1S1","estimate":"passive","continuous":{"names":["G_inf","A_1","lambda_1","B_1","C_1","alpha_1","beta_1"],"theta":[0.9825969127231009,-28782.59559973759,12837.708784129021,9274.238948364347,-1059.2780937989432,5839.482107024578,6412.154075998358]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":6.779061674941621e-06,"plrc_max_rel_error":0.0009101685150485792,"passive_certified":true,"passive_constraint_rounds":1,"folded":[],"double":{"fir":[1.126342650428919,-0.039266490245214045,0.01168802709372103],"real":[[0.23467313839381432,-2.5557924812602852]],"pair":[[-0.12243585321209617,-0.11793311668167729,0.11454697937279827,3.3733989113835925,0.3852616889322075]]},"q31":{"bits":31,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.8768153517387283,"zero_decay_bound":184,"fir":[302350303,-10540518,3137481],"real":[[2015826909,2,-686065320]],"pair":[[-525857985,-506518879,491975530,1,905539875,103417897]]}}]} admitgen:end
  */
 
 #endif /* WALL_48000_Q31_H */
