@@ -110,6 +110,11 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
   sub->add_option("--max-iterations", s.sampler.max_iterations, "Iteration cap per order (safety net)")
       ->check(CLI::Range(1L, 100'000'000L))->capture_default_str();
   sub->add_option("--slices", s.sampler.slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
+  sub->add_option("--grid-growth", s.grid_growth,
+                  "When the selected order lies on the edge of the grid (Q = --qmax or S = --smax), add up to this many "
+                  "real poles and as many pairs, one row or column at a time, while the data select them and the "
+                  "calls stay within the first round's (0 = the grid as given)")
+      ->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
   sub->add_option("--missed-mode-retries", s.missed_mode_retries,
                   "Re-run orders whose best likelihood is below a nested order's, doubling --live each round")
       ->check(CLI::Range(0, 6))->capture_default_str();
@@ -137,6 +142,8 @@ int run_fit_command(const FitCommand& o) {
   progress.message(fmt::format("fitting {} points {:.6g}-{:.6g} Hz over Q0-{} x S0-{}", data.size(), data.f_hz[0],
                                data.f_hz[data.size() - 1], settings.qmax, settings.smax));
   const FitResult fit = run_fit(data, settings, progress);
+  if (!o.quiet)
+    for (const auto& step : fit.grid.steps) fmt::print(stderr, "grid grown: {}\n", spelled(step));
   const std::string path = (std::filesystem::path(o.out) / "fit.json").string();
   const FitRecord record = library::write_fit_directory(o.out, data, read, settings, fit);
   created.keep();

@@ -105,6 +105,7 @@ std::string flag_for(const std::string& key) {
       {"fir_taps", "--fir-taps"},
       {"format", "--format"},
       {"format.skip_rows", "--skip-rows"},
+      {"grid_growth", "--grid-growth"},
       {"fs_hz", "--fs"},
       {"magnitude", "--magnitude"},
       {"name", "--name"},

@@ -55,6 +55,13 @@ Json settings_json(const FitSettingsRecord& s) {
          {"smax", s.smax},
          {"sampler", sampler}};
   if (s.passive) j["passive"] = *s.passive;
+  if (s.grid_growth) j["grid_growth"] = *s.grid_growth;
+  return j;
+}
+
+Json grid_json(const FitGrid& g) {
+  Json j{{"qmax", g.qmax}, {"smax", g.smax}, {"steps", plain_texts(g.steps)}};
+  if (g.edge) j["edge"] = plain_settings(*g.edge);
   return j;
 }
 
@@ -181,8 +188,20 @@ FitSettingsRecord read_settings(const Field& f) {
   s.smax = o.required("smax").integer();
   s.sampler = read_sampler_settings(o.required("sampler"));
   if (auto v = o.optional("passive")) s.passive = v->text();
+  if (auto v = o.optional("grid_growth")) s.grid_growth = v->integer();
   o.finish();
   return s;
+}
+
+FitGrid read_grid(const Field& f) {
+  ObjectReader o(f);
+  FitGrid g;
+  g.qmax = o.required("qmax").integer();
+  g.smax = o.required("smax").integer();
+  g.steps = o.required("steps").texts();
+  if (auto v = o.optional("edge")) g.edge = v->text();
+  o.finish();
+  return g;
 }
 
 FitPassiveEstimate read_passive(const Field& f) {
@@ -288,6 +307,7 @@ std::string fit_text(const FitRecord& fit) {
   if (fit.predictive) j["predictive"] = predictive_json(*fit.predictive);
   if (fit.warnings) j["warnings"] = plain_texts(*fit.warnings);
   if (fit.posterior) j["posterior"] = *fit.posterior;
+  if (fit.grid) j["grid"] = grid_json(*fit.grid);
   return j.dump(2) + "\n";
 }
 
@@ -321,6 +341,7 @@ FitRecord parse_fit(const std::string& text, const std::string& file) {
   if (auto v = o.optional("predictive")) fit.predictive = read_predictive(*v);
   if (auto v = o.optional("warnings")) fit.warnings = v->texts();
   if (auto v = o.optional("posterior")) fit.posterior = v->text();
+  if (auto v = o.optional("grid")) fit.grid = read_grid(*v);
   o.finish();
   return fit;
 }

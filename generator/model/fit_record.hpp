@@ -58,6 +58,15 @@ struct FitSettingsRecord {
   std::int64_t qmax = 0, smax = 0;
   FitSamplerSettings sampler;
   std::optional<std::string> passive;  ///< present when the prior was truncated to passive models
+  std::optional<std::int64_t> grid_growth;  ///< absent in older fits (their grids never grew)
+};
+
+/// The grid finally fitted, when it grew beyond settings.qmax × settings.smax or the selected order lies on its
+/// edge (selection/grid_growth.hpp).
+struct FitGrid {
+  std::int64_t qmax = 0, smax = 0;
+  std::vector<std::string> steps;    ///< one line per growth step
+  std::optional<std::string> edge;   ///< why the selected order still lies on the edge; may name settings
 };
 
 /// The passive estimate of one order (docs/passivity.md).
@@ -125,6 +134,7 @@ struct FitRecord {
   /// reports give them plain_settings(), the command line spells each as its flag.
   std::optional<std::vector<std::string>> warnings;
   std::optional<std::string> posterior;        ///< file name of the posterior index, when written
+  std::optional<FitGrid> grid;                 ///< absent when the grid did not grow and the selection is inside it
 
   /// The "models" entry of `order` (empty: the selected order), compared as parsed orders (Order::parse,
   /// which throws InputError for text that is not one); nullptr when that order was not fitted.

@@ -194,7 +194,10 @@ std::string provenance(const FitRecord& fit) {
                               !in.rho_c ? ", normalised" : ", ρc = " + escape_xml(json_number(*in.rho_c)),
                               !in.band ? "" : ", band " + escape_xml(band))},
       {"layout", escape_xml(in.read_as.value_or("—"))},
-      {"orders", fmt::format("Q0–{} × S0–{}", s.qmax, s.smax)},
+      {"orders", !fit.grid || fit.grid->steps.empty()
+                     ? fmt::format("Q0–{} × S0–{}", s.qmax, s.smax)
+                     : fmt::format("Q0–{} × S0–{} (grown from Q0–{} × S0–{}: {})", fit.grid->qmax, fit.grid->smax,
+                                   s.qmax, s.smax, escape_xml(fmt::format("{}", fmt::join(fit.grid->steps, "; "))))},
       {"sampler", fmt::format("{}; {} live points, seed {}, Δln Z {} , slices {}", escape_xml(s.sampler.method), s.live,
                               s.seed, escape_xml(json_number(s.sampler.dlogz)),
                               s.sampler.slices ? std::to_string(*s.sampler.slices) : std::string("3 + dim"))},

@@ -6,6 +6,7 @@
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
+#include "selection/grid_growth.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -243,19 +244,94 @@ std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
 
 namespace {
 
-/// Runs the orders grid[i] for i in `which` on a pool of workers, largest first, writing results[i].
+/// Runs the orders grid[i] for i in `which` on a pool of workers, largest first, writing results[i]; order i
+/// runs with 2^round[i] times the live points and that round's seed stream.
 void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
-                const std::vector<std::size_t>& which, int round, std::vector<ModelResult>& results,
-                Progress& progress) {
+                const std::vector<std::size_t>& which, const std::vector<int>& round,
+                std::vector<ModelResult>& results, Progress& progress) {
   std::vector<std::size_t> queue = which;
   std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
   GridProgress status(progress, queue.size());
   run_in_parallel(queue, settings.threads, [&](std::size_t i) {
     const Order& order = grid[i];
-    results[i] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); }, round);
+    results[i] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); }, round[i]);
     status.done(results[i]);
   });
   progress.finish();  // (on an exception, Progress's destructor clears the line)
+}
+
+/// Re-runs orders that missed a mode (missed_modes), in rounds r = 1 … missed_mode_retries with 2^r times the
+/// live points; an order runs round r at most once (`rounds[i]`: the last round order i ran), so calling this
+/// again after the grid grew re-runs only what the new orders reveal.
+void rerun_missed_modes(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
+                        std::vector<ModelResult>& results, std::vector<int>& rounds, Progress& progress) {
+  for (int round = 1; round <= settings.missed_mode_retries; ++round) {
+    std::vector<std::size_t> which;
+    for (const MissedMode& m : missed_modes(results))
+      if (rounds[m.order] < round) which.push_back(m.order);
+    if (which.empty()) continue;
+    progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
+                                 settings.sampler.live << round));
+    std::vector<ModelResult> again = results;
+    const std::vector<int> at(grid.size(), round);
+    run_orders(data, settings, grid, which, at, again, progress);
+    // Keep the re-run only where it reached a higher likelihood (it cannot be worse evidence-wise
+    // for a run that found the mode the first one missed).
+    for (std::size_t i : which) {
+      rounds[i] = round;
+      if (again[i].run.max_log_likelihood > results[i].run.max_log_likelihood) results[i] = std::move(again[i]);
+    }
+  }
+}
+
+std::size_t select_order(const FitSettings& settings, const std::vector<ModelResult>& results) {
+  std::vector<double> log_z;
+  std::vector<int> buffers;
+  for (const auto& m : results) {
+    log_z.push_back(m.run.log_z);
+    buffers.push_back(m.order.buffers());
+  }
+  return settings.rule.select(log_z, buffers);
+}
+
+/// Grows the grid while the selected order lies on its edge (selection/grid_growth.hpp): runs the added orders
+/// (and the re-runs they call for) and keeps `grid`, `results` and `rounds` in the grown grid's order.
+GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::vector<Order>& grid,
+                     std::vector<ModelResult>& results, std::vector<int>& rounds, double first_round_calls,
+                     Progress& progress) {
+  GridGrowth growth{settings.qmax, settings.smax, {}, {}};
+  const int k = real_data_count(settings.data_count, data.size());
+  double spent = 0.0;
+  for (;;) {
+    double step_calls = 0.0;
+    const auto step = next_grid_step(results, select_order(settings, results), growth.qmax, growth.smax, settings, k,
+                                     spent, std::max(first_round_calls, kMinGrowthBudgetCalls), step_calls, growth.edge);
+    if (!step) return growth;
+    progress.message(step->reason);
+    growth.steps.push_back(step->reason);
+    spent += step_calls;
+    std::vector<Order> grown = order_grid(step->qmax, step->smax);
+    std::vector<ModelResult> merged(grown.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
+    std::vector<int> merged_rounds(grown.size(), 0);
+    std::vector<std::size_t> added;
+    for (std::size_t i = 0; i < grown.size(); ++i) {
+      const auto old = std::find(grid.begin(), grid.end(), grown[i]);
+      if (old == grid.end()) {
+        added.push_back(i);
+        continue;
+      }
+      const auto j = static_cast<std::size_t>(old - grid.begin());
+      merged[i] = std::move(results[j]);
+      merged_rounds[i] = rounds[j];
+    }
+    run_orders(data, settings, grown, added, merged_rounds, merged, progress);
+    grid = std::move(grown);
+    results = std::move(merged);
+    rounds = std::move(merged_rounds);
+    growth.qmax = step->qmax;
+    growth.smax = step->smax;
+    rerun_missed_modes(data, settings, grid, results, rounds, progress);
+  }
 }
 
 }  // namespace
@@ -267,46 +343,32 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
 std::vector<ModelResult> run_first_round(const Measurement& data, const FitSettings& settings, Progress& progress) {
   const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
-  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}, {}});
+  std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
   std::vector<std::size_t> which(grid.size());
   std::iota(which.begin(), which.end(), std::size_t{0});
-  run_orders(data, settings, grid, which, 0, results, progress);
+  run_orders(data, settings, grid, which, std::vector<int>(grid.size(), 0), results, progress);
   return results;
 }
 
 FitResult complete_fit(const Measurement& data, const FitSettings& settings, std::vector<ModelResult> results,
                        Progress& progress) {
-  const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
+  std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
   if (results.size() != grid.size())
     throw std::logic_error("complete_fit: one first-round result per order of the grid expected");
   for (std::size_t i = 0; i < grid.size(); ++i)
     if (results[i].order != grid[i]) throw std::logic_error("complete_fit: results not in grid order");
-  std::vector<std::size_t> which;
-  for (int round = 1; round <= settings.missed_mode_retries; ++round) {
-    which.clear();
-    for (const MissedMode& m : missed_modes(results)) which.push_back(m.order);
-    if (which.empty()) break;
-    progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
-                                 settings.sampler.live << round));
-    std::vector<ModelResult> again = results;
-    run_orders(data, settings, grid, which, round, again, progress);
-    // Keep the re-run only where it reached a higher likelihood (it cannot be worse evidence-wise
-    // for a run that found the mode the first one missed).
-    for (std::size_t i : which)
-      if (again[i].run.max_log_likelihood > results[i].run.max_log_likelihood) results[i] = std::move(again[i]);
-  }
+  double first_round_calls = 0.0;
+  for (const auto& m : results) first_round_calls += static_cast<double>(m.run.calls);
+  std::vector<int> rounds(grid.size(), 0);
+  rerun_missed_modes(data, settings, grid, results, rounds, progress);
 
   FitResult fit;
-  std::vector<double> log_z;
-  std::vector<int> buffers;
-  for (const auto& m : results) {
-    log_z.push_back(m.run.log_z);
-    buffers.push_back(m.order.buffers());
-  }
-  fit.selected = settings.rule.select(log_z, buffers);
+  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_calls, progress);
+  fit.selected = select_order(settings, results);
   fit.models = std::move(results);
   fit.warnings = missed_mode_warnings(fit.models);
+  if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
   for (auto& m : fit.models)
     m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
                                             settings.data_count);

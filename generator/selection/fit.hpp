@@ -55,6 +55,9 @@ struct FitSettings {
   /// is then divided by √(ratio), inference/poles_sampler.hpp); otherwise the order is
   /// re-run with the full sampler.
   double truncation_tolerance = 0.05;
+  /// How many real poles and how many pairs the grid may gain beyond qmax/smax when the selected order lies
+  /// on its edge (selection/grid_growth.hpp; 0 keeps the grid as given).
+  int grid_growth = 2;
 };
 
 struct ModelResult {
@@ -87,11 +90,20 @@ struct PredictiveBand {
   int draws = 0;
 };
 
+/// How the grid grew beyond Q0-qmax × S0-smax (selection/grid_growth.hpp).
+struct GridGrowth {
+  int qmax = 0, smax = 0;          ///< the grid finally fitted
+  std::vector<std::string> steps;  ///< one line per growth step, in order
+  /// Why the selected order still lies on the grid's edge (empty when it lies inside); also a warning.
+  std::string edge;
+};
+
 struct FitResult {
-  std::vector<ModelResult> models;  ///< grid order (Q-major)
+  std::vector<ModelResult> models;  ///< grid order (Q-major) of the final grid (grid.qmax × grid.smax)
   std::size_t selected = 0;
   PredictiveBand predictive;        ///< of the selected order
   std::vector<std::string> warnings;  ///< e.g. missed modes (see missed_mode_warnings)
+  GridGrowth grid;
 };
 
 /// Order (Q', S') contains (Q, S) when Q' ≥ Q and S' ≥ S (zero residues reproduce the smaller
@@ -136,7 +148,8 @@ std::vector<ModelResult> run_first_round(const Measurement& data, const FitSetti
 
 /// The rest of a fit from its first round (`first_round`: one result per order, grid order): the re-runs of
 /// orders that missed a mode (they depend on the other orders' results, so they run here), the selection,
-/// the passive estimates, the warnings and the predictive band.
+/// the growth of the grid while the selected order lies on its edge (the added orders run here too), the
+/// passive estimates, the warnings and the predictive band.
 FitResult complete_fit(const Measurement& data, const FitSettings& settings, std::vector<ModelResult> first_round,
                        Progress& progress);
 

@@ -74,7 +74,7 @@ FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& se
 std::string FitCostEstimate::describe() const {
   return fmt::format("cost estimate: {} points, {} order(s): ~{:.2g} likelihood evaluations at {:.3g} ms each (largest "
                      "order, timed here) = ~{} of CPU, ~{} on {} thread(s) (within a factor ~2; more if orders are "
-                     "re-run for missed modes); fewer points ({}), a smaller {}/{} or {} cut it",
+                     "re-run for missed modes or the grid grows); fewer points ({}), a smaller {}/{} or {} cut it",
                      points, orders, evaluations, seconds_per_evaluation * 1e3, duration(cpu_seconds),
                      duration(wall_seconds), threads, setting("band"), setting("qmax"), setting("smax"),
                      setting("sampler.live"));

@@ -56,6 +56,7 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
                              "correction is not accurate to the tolerance)"
                            : "sampled";
   r.sampler.truncation_tolerance_nats = s.truncation_tolerance;
+  r.grid_growth = s.grid_growth;
   if (s.passive) r.passive = "prior truncated to passive models (Hamiltonian test); evidence under the renormalised prior";
   return r;
 }
@@ -140,6 +141,11 @@ FitRecord fit_record(const Measurement& data, const ReadOptions& read, const Fit
   warnings.insert(warnings.end(), fit.warnings.begin(), fit.warnings.end());
   if (const auto poor = poor_fit_warning(chosen.order.name(), goodness_of_fit(data, chosen))) warnings.push_back(*poor);
   r.warnings = warnings;
+  if (!fit.grid.steps.empty() || !fit.grid.edge.empty()) {
+    FitGrid g{fit.grid.qmax, fit.grid.smax, fit.grid.steps, {}};
+    if (!fit.grid.edge.empty()) g.edge = fit.grid.edge;
+    r.grid = g;
+  }
   return r;
 }
 

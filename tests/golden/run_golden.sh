@@ -4,7 +4,8 @@
 # committed files (tests/golden/expected/), byte for byte. A refactoring that changes no behaviour keeps them;
 # a deliberate change of an output regenerates them with tools/update-golden and says why in the commit.
 #
-# What is compared: fit.json of a reduced-grid fit (Basotect round 5 cm, Q0-1 x S0-1, 40 live points), the
+# What is compared: fit.json of a reduced-grid fit (Basotect round 5 cm, Q0-0 x S0-2 grown by one pair to S = 3,
+# the cap of --grid-growth 1, so that the grid record with a step and an edge warning is covered; 40 live points), the
 # headers emitted from it (48 kHz in f32, q31 and q15), the text of `check` on each header, a synthesised
 # data file, and diagnosis.json of a diagnosis against a SPEC simulation (40 live points). Sizes keep the job
 # to a few seconds; every value in these files passes through the code paths a default run uses.
@@ -20,8 +21,8 @@ cd "$work"
 out=out
 cp "$samples/basotect_tuberlin/round_5cm.csv" "$samples/basotect_tuberlin/LICENSE.txt" .
 
-"$admitgen" fit round_5cm.csv --columns f,_,_,_,_,re,im,_ --qmax 1 --smax 1 --live 40 --seed 11 \
-  --threads 2 --quiet --out fit
+"$admitgen" fit round_5cm.csv --columns f,_,_,_,_,re,im,_ --qmax 0 --smax 2 --grid-growth 1 --live 40 \
+  --seed 11 --threads 2 --quiet --out fit
 cp fit/fit.json "$out/fit.json"
 for format in f32 q31 q15; do
   "$admitgen" emit fit/fit.json --fs 48000 --format "$format" --quiet --out "$out/wall_48000_$format.h"

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// Growing the order grid (selection/grid_growth.hpp, docs/method.md "Growing the grid"): the rule on
+// hand-made evidence grids, where every outcome is known, and a fit that grows compared with one that was
+// given the grown grid from the start.
+#include "core/errors.hpp"
+#include "core/progress.hpp"
+#include "data/csv_reader.hpp"
+#include "selection/fit.hpp"
+#include "selection/grid_growth.hpp"
+#include "test_support.hpp"
+
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+using namespace admitgen;
+
+namespace {
+
+/// A fitted order as next_grid_step sees it: evidence, its error and the run's likelihood calls.
+ModelResult fitted(int q, int s, double log_z, double error, std::int64_t calls) {
+  ModelResult m{Order(q, s), {}, 0, 0.0, {}};
+  m.run.log_z = log_z;
+  m.run.log_z_error = error;
+  m.run.calls = calls;
+  return m;
+}
+
+/// Every order of Q0-qmax × S0-smax with ln Z from `log_z(q, s)`, error 0.3 and 1000 calls.
+template <class F>
+std::vector<ModelResult> grid_of(int qmax, int smax, F log_z) {
+  std::vector<ModelResult> out;
+  for (const Order& o : order_grid(qmax, smax)) out.push_back(fitted(o.q(), o.s(), log_z(o.q(), o.s()), 0.3, 1000));
+  return out;
+}
+
+std::size_t index_of(const std::vector<ModelResult>& models, const Order& o) {
+  for (std::size_t i = 0; i < models.size(); ++i)
+    if (models[i].order == o) return i;
+  FAIL("order not in the grid");
+  return 0;
+}
+
+struct Step {
+  std::optional<GridStep> step;
+  double calls = 0.0;
+  std::string refusal;
+};
+
+Step step_of(const std::vector<ModelResult>& models, const Order& selected, int qmax, int smax, int growth = 2,
+             int k = 400, double spent = 0.0, double budget = 1e12) {
+  FitSettings settings;
+  settings.qmax = 1;
+  settings.smax = 1;
+  settings.grid_growth = growth;
+  Step r;
+  r.step = next_grid_step(models, index_of(models, selected), qmax, smax, settings, k, spent, budget, r.calls, r.refusal);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("grid growth: the rule on hand-made evidence grids") {
+  // ln Z rising by 50 nats per pair and flat in Q: the data ask for more pairs, not for real poles.
+  const auto pairs_rise = [](int, int s) { return 50.0 * s; };
+
+  SUBCASE("a selection inside the grid never grows") {
+    const auto g = grid_of(2, 2, [](int q, int s) { return (q == 1 && s == 1) ? 10.0 : 0.0; });
+    const Step r = step_of(g, Order(1, 1), 2, 2);
+    CHECK_FALSE(r.step);
+    CHECK(r.refusal.empty());
+  }
+  SUBCASE("rising across the S edge adds the column S = smax + 1 for every Q") {
+    const auto g = grid_of(1, 1, pairs_rise);
+    // Q0S1 and Q1S1 tie; the rule picks by evidence first, the index only breaks the tie: Q0S1 is selected here.
+    const Step r = step_of(g, Order(0, 1), 1, 1);
+    REQUIRE(r.step);
+    CHECK(r.step->qmax == 1);
+    CHECK(r.step->smax == 2);
+    REQUIRE(r.step->add.size() == 2);
+    CHECK(r.step->add[0] == Order(0, 2));
+    CHECK(r.step->add[1] == Order(1, 2));
+    // Estimated calls c·(D/d)² from the largest fitted order Q1S1 (d = 7, c = 1000): Q0S2 (D = 9) and Q1S2
+    // (D = 11) cost 1000·(81 + 121)/49 = 4122.45 calls.
+    CHECK(r.calls == doctest::Approx(1000.0 * (81.0 + 121.0) / 49.0).epsilon(1e-12));
+    CHECK(r.step->reason.find("Q0S1 lies on the edge S = 1") != std::string::npos);
+    CHECK(r.step->reason.find("added S = 2 for Q0-1") != std::string::npos);
+    // The budget is exact: one call short refuses, the exact figure passes.
+    CHECK_FALSE(step_of(g, Order(0, 1), 1, 1, 2, 400, 0.0, r.calls - 1.0).step);
+    CHECK(step_of(g, Order(0, 1), 1, 1, 2, 400, 0.0, r.calls).step);
+    const Step over = step_of(g, Order(0, 1), 1, 1, 2, 400, 1.0, r.calls);
+    CHECK_FALSE(over.step);
+    CHECK(over.refusal.find("beyond the budget") != std::string::npos);
+  }
+  SUBCASE("a flat edge (gain below 10 dB or below 3 combined errors) does not grow and does not warn") {
+    // 2.2 nats < 2.3026 (10 dB).
+    const auto g = grid_of(1, 1, [](int q, int s) { return 2.2 * s + 0.0 * q; });
+    const Step r = step_of(g, Order(0, 1), 1, 1);
+    CHECK_FALSE(r.step);
+    CHECK(r.refusal.empty());
+    // 3 nats > 10 dB, but errors of 1.0 make 3 combined errors 4.24 nats.
+    auto noisy = grid_of(1, 1, [](int, int s) { return 3.0 * s; });
+    for (auto& m : noisy) m.run.log_z_error = 1.0;
+    CHECK_FALSE(step_of(noisy, Order(0, 1), 1, 1).step);
+    // The same gain with errors of 0.3 (3 combined errors 1.27 nats) grows.
+    CHECK(step_of(grid_of(1, 1, [](int, int s) { return 3.0 * s; }), Order(0, 1), 1, 1).step);
+  }
+  SUBCASE("an edge at Q = 0 never grows real poles") {
+    const auto g = grid_of(0, 1, pairs_rise);
+    const Step r = step_of(g, Order(0, 1), 0, 1);
+    REQUIRE(r.step);
+    CHECK(r.step->qmax == 0);
+    CHECK(r.step->smax == 2);
+    REQUIRE(r.step->add.size() == 1);
+    CHECK(r.step->add[0] == Order(0, 2));
+    CHECK(r.step->reason.find("added S = 2 for Q = 0") != std::string::npos);
+  }
+  SUBCASE("at a rising corner both kinds grow") {
+    const auto g = grid_of(1, 1, [](int q, int s) { return 20.0 * q + 50.0 * s; });
+    const Step r = step_of(g, Order(1, 1), 1, 1);
+    REQUIRE(r.step);
+    CHECK(r.step->qmax == 2);
+    CHECK(r.step->smax == 2);
+    CHECK(r.step->add.size() == 5);  // Q2S0, Q2S1, Q2S2, Q0S2, Q1S2
+  }
+  SUBCASE("the cap and the data count stop growth with a reason") {
+    const auto g = grid_of(1, 3, pairs_rise);  // settings.smax = 1, growth 2: S may reach 3, not 4
+    const Step capped = step_of(g, Order(0, 3), 1, 3);
+    CHECK_FALSE(capped.step);
+    CHECK(capped.refusal.find("may not grow further") != std::string::npos);
+    CHECK(capped.refusal.find(setting("grid_growth")) != std::string::npos);
+    // Growing Q0-1 × S0-1 to S = 2 needs Q1S2: 11 parameters + 2 ≤ K; K = 12 refuses, K = 13 allows.
+    const auto small = grid_of(1, 1, pairs_rise);
+    const Step few = step_of(small, Order(0, 1), 1, 1, 2, 12);
+    CHECK_FALSE(few.step);
+    CHECK(few.refusal.find("K = 12") != std::string::npos);
+    CHECK(step_of(small, Order(0, 1), 1, 1, 2, 13).step);
+    // Growth 0 keeps the grid as given, and says so since the evidence still rises.
+    const Step none = step_of(small, Order(0, 1), 1, 1, 0);
+    CHECK_FALSE(none.step);
+    CHECK_FALSE(none.refusal.empty());
+  }
+}
+
+TEST_CASE("grid growth: a grown fit equals a fit given the grown grid") {
+  // The reference file (truth Q1S1) on Q0-0 × S0-1: Q0S1 rises over Q0S0 by thousands of dB and grows S to 2,
+  // then Q0S2 rises over Q0S1 and grows S to 3 (the cap at growth 2), each added order run with its own seed
+  // stream. Missed-mode re-runs are off so that both fits run exactly the same set of runs.
+  const Measurement data = read_measurement(test::sample("reference/q1s1_sigma0.01.csv"), ReadOptions{});
+  FitSettings grown;
+  grown.qmax = 0;
+  grown.smax = 1;
+  grown.sampler.live = 40;
+  grown.sampler.seed = 3;
+  grown.missed_mode_retries = 0;
+  grown.threads = 1;
+  Progress quiet(false);
+  const FitResult a = run_fit(data, grown, quiet);
+  CHECK(a.grid.qmax == 0);
+  CHECK(a.grid.smax == 3);
+  CHECK(a.grid.steps.size() == 2);
+  FitSettings given = grown;
+  given.smax = 3;
+  given.grid_growth = 0;
+  const FitResult b = run_fit(data, given, quiet);
+  REQUIRE(a.models.size() == b.models.size());
+  for (std::size_t i = 0; i < a.models.size(); ++i) {
+    INFO(a.models[i].order.name());
+    CHECK(a.models[i].order == b.models[i].order);
+    CHECK(a.models[i].run.log_z == b.models[i].run.log_z);  // bit for bit: same seed stream, same run
+    CHECK(a.models[i].run.calls == b.models[i].run.calls);
+  }
+  CHECK(a.selected == b.selected);
+  // Q0S3 (selected: the data need a real pole the grid leaves out, and a third pair stands in for it) lies on
+  // the edge S = 3 with the evidence still rising, so the grown fit says why it stopped; the given grid, with
+  // growth 0, says the same with its own reason.
+  CHECK(a.models[a.selected].order == Order(0, 3));
+  CHECK(a.grid.edge.find("may not grow further") != std::string::npos);
+  CHECK(!b.grid.edge.empty());
+}
