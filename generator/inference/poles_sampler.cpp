@@ -63,14 +63,15 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   std::vector<double> best_theta;
   Eigen::ArrayXd rho = Eigen::ArrayXd::Ones(weight.size());
   double correction_variance = 0.0;  // Σ p_i² Var(ρ_i)
-  // First pass: which points need the box estimate, and their share a_i = p_i/√P̃ of the draw budget
-  // (minimising Σ p_i² Var(ρ_i) ≈ Σ p_i²/(m_i P̃) under Σ m_i = budget gives m_i ∝ p_i/√P̃).
+  // First pass: which points need the box estimate, and their share of the draw budget. With GHK the
+  // relative variance of P̂ is of order one whatever P_box (Var(ρ_i) ≈ κ ρ_i²/m_i), so minimising
+  // Σ p_i² κ/m_i under Σ m_i = budget gives m_i ∝ p_i.
   std::vector<double> share(poles.size(), 0.0);
   double share_sum = 0.0, corrected = 0.0;
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const ResidueConditional& c = marginal.conditional(dim == 0 ? nullptr : poles.point(i));
     if (c.valid && -std::expm1(c.log_p_lo - c.log_p_up) > 1e-9) {
-      share[i] = std::exp(std::log(weight[static_cast<Eigen::Index>(i)]) - 0.5 * c.log_p_sampled);  // P̃ may underflow
+      share[i] = weight[static_cast<Eigen::Index>(i)];
       share_sum += share[i];
       corrected += 1.0;
     }
@@ -92,24 +93,30 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
       r = draw_residues(c, lo, hi, rng, method);
       if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];
     } else {
-      // P̂ = h/m (unbiased for any m ≥ 1); the first draw inside the box is an exact draw of the
-      // truncated t. m_i from the budget shares above, at most kMaxBoxDraws.
+      // P̂: the mean of m GHK replicates (unbiased, each in [0, 1]; inference/residue_draws.hpp), m_i from
+      // the budget shares above; its variance from the replicates' sample variance.
       const double wanted = share_sum > 0.0 ? budget * share[i] / share_sum : 1.0;
-      const long m = std::clamp(static_cast<long>(std::ceil(std::min(wanted, 1e12))), 1L, kMaxBoxDraws);
-      long hits = 0;
+      const long m = std::clamp(static_cast<long>(std::ceil(std::min(wanted, 1e12))), kMinBoxDraws, kMaxBoxDraws);
+      BoxMassSimulator simulator(c, lo, hi);
+      double sum = 0.0, sum2 = 0.0;
       for (long d = 0; d < m; ++d) {
-        Eigen::VectorXd x = untruncated_residue_draw(c, rng);
-        if (in_residue_box(x, lo, hi) && hits++ == 0) r = std::move(x);
+        const double x = simulator.draw(rng);
+        sum += x;
+        sum2 += x * x;
       }
-      const double md = static_cast<double>(m), p_hat = static_cast<double>(hits) / md;
-      rho[ii] = hits == 0 ? 0.0 : std::exp(std::log(p_hat) - c.log_p_sampled);
-      // Var(P̂) = P(1 − P)/m with P estimated by min(p̃, P̃), p̃ = (h + 1)/(m + 2): h = 0 or h = m does
-      // not claim zero variance, and P_box ≤ P̃ (the slab bound, docs/method.md) caps it. In logs: P̃ may
-      // underflow where the t lies far outside the box (such points carry no weight).
-      const double log_p_tilde = std::min(std::log((hits + 1.0) / (md + 2.0)), c.log_p_sampled);
-      correction_variance += std::exp(2.0 * (std::log(weight[ii]) - c.log_p_sampled) + log_p_tilde) *
-                             -std::expm1(log_p_tilde) / md;
-      if (hits == 0) r = c.mean.cwiseMax(lo).cwiseMin(hi);  // weight 0: any admissible θ will do
+      const double md = static_cast<double>(m), p_hat = sum / md;
+      const double sample_variance = std::max(sum2 - sum * p_hat, 0.0) / (md - 1.0);
+      rho[ii] = p_hat > 0.0 ? std::exp(std::log(p_hat) - c.log_p_sampled) : 0.0;
+      // Var(ρ_i) = Var(P̂)/P̃² (in logs: P̃ may underflow where the t lies far outside the box).
+      if (sample_variance > 0.0)
+        correction_variance += std::exp(2.0 * (std::log(weight[ii]) - c.log_p_sampled) + std::log(sample_variance / md));
+      if (p_hat > 0.0) {
+        ResidueDrawMethod method;
+        r = draw_residues(c, lo, hi, rng, method);
+        if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];
+      } else {
+        r = c.mean.cwiseMax(lo).cwiseMin(hi);  // weight 0: any admissible θ will do
+      }
     }
     assemble_theta(order, psi, r, theta);
     run.log_likelihood[i] = likelihood(theta);
@@ -128,7 +135,10 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     out.reweighted_ess_ratio = effective_sample_size(weight * rho) / effective_sample_size(weight);
     for (std::size_t i = 0; i < poles.size(); ++i) run.log_weight[i] += std::log(rho[static_cast<Eigen::Index>(i)]);
     run.log_z += out.truncation_correction;
-    run.log_z_error = std::hypot(run.log_z_error, out.truncation_correction_error);
+    // The reweighted points carry the evidence with fewer effective samples: the sampling error √(H/n)
+    // grows as for n·ratio points (a conservative allowance; docs/method.md, "Tolerance and fallback").
+    run.log_z_error = std::hypot(run.log_z_error / std::sqrt(std::min(out.reweighted_ess_ratio, 1.0)),
+                                 out.truncation_correction_error);
   } else {
     out.reweighted_ess_ratio = 0.0;
   }

@@ -24,7 +24,7 @@ struct PolesRun {
   NestedRun run;
   /// Box correction (docs/method.md, "Truncation by the residue box"). The sampled likelihood uses P̃ (ResidueConditional::
   /// log_p_sampled) for the box mass P_box; every point whose bounds differ (1 − P_lo/P_up > 1e-9) gets the
-  /// unbiased estimate P̂ = h/m from m untruncated draws (see kBoxDrawBudget) (h inside the box), and its
+  /// unbiased estimate P̂, the mean of m GHK replicates (see kBoxDrawBudget), and its
   /// weight is multiplied by ρ = P̂/P̃. ln Z gains ln Σ p_i ρ_i (this field), with the Monte Carlo error below
   /// (added in quadrature to run.log_z_error); elsewhere ρ = 1 exactly (to 1e-9).
   double truncation_correction = 0.0;
@@ -42,12 +42,13 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
                            bool reduce_symmetry, DataCount count, const NestedSettings& settings,
                            std::uint64_t draw_seed, const NestedProgressFn& progress = {});
 
-/// Untruncated draws for the box-mass estimates P̂ of one run: kBoxDrawsPerPoint per point that needs
-/// one, at most kBoxDrawBudget in all, shared over the
-/// points in proportion to p_i/√P̃_i (the allocation minimising the correction's variance bound), at
-/// least 1 and at most kMaxBoxDraws per point. The reported correction error says what was reached.
-constexpr double kBoxDrawBudget = 2e6;
-constexpr double kBoxDrawsPerPoint = 50.0;
-constexpr long kMaxBoxDraws = 200000;
+/// GHK replicates for the box-mass estimates P̂ of one run (inference/residue_draws.hpp): kBoxDrawsPerPoint
+/// per point that needs one, at most kBoxDrawBudget in all, shared over the points in proportion to their
+/// weight p_i, at least kMinBoxDraws and at most kMaxBoxDraws per point. The reported correction error
+/// (from the replicates' sample variances) says what was reached.
+constexpr double kBoxDrawBudget = 2e5;
+constexpr double kBoxDrawsPerPoint = 20.0;
+constexpr long kMinBoxDraws = 2;  ///< the sample variance needs two
+constexpr long kMaxBoxDraws = 20000;
 
 }  // namespace admitgen

@@ -3,8 +3,13 @@
 
 #include "inference/student_t.hpp"
 
+#include <boost/math/special_functions/erf.hpp>
+
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace admitgen {
 namespace {
@@ -27,7 +32,79 @@ Eigen::VectorXd gibbs(const ResidueConditional& c, const Eigen::VectorXd& lo, co
   return r;
 }
 
+/// Upper tail of the standard normal, Q(x) = P(Z > x), and its inverse.
+double normal_upper(double x) { return 0.5 * std::erfc(x / std::sqrt(2.0)); }
+double normal_upper_inverse(double q) { return std::sqrt(2.0) * boost::math::erfc_inv(2.0 * q); }
+
+/// P(l ≤ Z ≤ h) and a draw of Z given l ≤ Z ≤ h by inversion, from upper tails only on the side of the
+/// interval away from 0 (no probabilities near 1 subtracted). Returns the probability (0: interval
+/// beyond double precision; then u is left alone).
+double truncated_normal(double l, double h, double uniform, double& u) {
+  if (h <= 0.0) {  // mirror to the right of 0
+    const double p = truncated_normal(-h, -l, uniform, u);
+    u = -u;
+    return p;
+  }
+  if (l >= 0.0) {
+    const double ql = normal_upper(l), qh = normal_upper(h), p = ql - qh;
+    if (!(p > 0.0)) return 0.0;
+    u = std::clamp(normal_upper_inverse(std::max(qh + uniform * p, 1e-300)), l, h);
+    return p;
+  }
+  const double below = normal_upper(-l), above = normal_upper(h), p = 1.0 - below - above;
+  const double v = below + uniform * p;  // Φ(u)
+  u = std::clamp(v < 0.5 ? -normal_upper_inverse(std::max(v, 1e-300)) : normal_upper_inverse(std::max(1.0 - v, 1e-300)),
+                 l, h);
+  return p;
+}
+
 }  // namespace
+
+BoxMassSimulator::BoxMassSimulator(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi)
+    : c_(c) {
+  const Eigen::Index p = c.mean.size();
+  Eigen::MatrixXd inv = Eigen::MatrixXd::Identity(p, p);
+  c.chol.triangularView<Eigen::Lower>().solveInPlace(inv);  // L̃⁻¹
+  const Eigen::MatrixXd cov = inv.transpose() * inv;        // M̃⁻¹
+  const Eigen::VectorXd a = lo.cwiseQuotient(c.scale) - c.mean.cwiseQuotient(c.scale);
+  const Eigen::VectorXd b = hi.cwiseQuotient(c.scale) - c.mean.cwiseQuotient(c.scale);
+  // Most constrained first: the smallest marginal mass of the interval at the t's typical scale.
+  const double sigma = std::sqrt(c.s_min / c.nu);
+  std::vector<double> mass(static_cast<std::size_t>(p));
+  for (Eigen::Index k = 0; k < p; ++k) {
+    double unused = 0.0;
+    const double sd = sigma * std::sqrt(cov(k, k));
+    mass[static_cast<std::size_t>(k)] = truncated_normal(a[k] / sd, b[k] / sd, 0.5, unused);
+  }
+  order_.resize(static_cast<std::size_t>(p));
+  std::iota(order_.begin(), order_.end(), Eigen::Index{0});
+  std::stable_sort(order_.begin(), order_.end(), [&](Eigen::Index i, Eigen::Index j) {
+    return mass[static_cast<std::size_t>(i)] < mass[static_cast<std::size_t>(j)];
+  });
+  Eigen::MatrixXd permuted(p, p);
+  a_.resize(p);
+  b_.resize(p);
+  for (Eigen::Index i = 0; i < p; ++i) {
+    const Eigen::Index k = order_[static_cast<std::size_t>(i)];
+    a_[i] = a[k];
+    b_[i] = b[k];
+    for (Eigen::Index j = 0; j < p; ++j) permuted(i, j) = cov(k, order_[static_cast<std::size_t>(j)]);
+  }
+  chol_ = Eigen::LLT<Eigen::MatrixXd>(permuted).matrixL();
+  u_.resize(p);
+}
+
+double BoxMassSimulator::draw(Rng& rng) {
+  const double root_w = std::sqrt(chi_square_draw(c_.nu, rng) / c_.s_min);  // 1/σ, σ = √(S_min/W)
+  double estimate = 1.0;
+  for (Eigen::Index i = 0; i < u_.size(); ++i) {
+    const double partial = chol_.row(i).head(i).dot(u_.head(i)), diag = chol_(i, i);
+    const double l = (a_[i] * root_w - partial) / diag, h = (b_[i] * root_w - partial) / diag;
+    estimate *= truncated_normal(l, h, rng.uniform(), u_[i]);
+    if (!(estimate > 0.0)) return 0.0;
+  }
+  return estimate;
+}
 
 bool in_residue_box(const Eigen::VectorXd& r, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
   return (r.array() >= lo.array()).all() && (r.array() <= hi.array()).all();

@@ -2,6 +2,7 @@
 #include "inference/residue_marginal.hpp"
 
 #include "core/errors.hpp"
+#include "inference/box_least_squares.hpp"
 #include "inference/pole_space.hpp"
 #include "inference/student_t.hpp"
 #include "model/residue_basis.hpp"
@@ -38,18 +39,9 @@ ResidueMarginal::ResidueMarginal(const Measurement& data, const Order& order, Da
   width_ = hi_ - lo_;
   slab_lo_.resize(p_);
   slab_hi_.resize(p_);
-  // Nodes of y = ln(W/ν), W ~ χ²_ν: density ∝ exp(ν/2 · (y − e^y)), sd ≈ √(2/ν); 33 trapezoid nodes over
-  // ±10 sd of the mode y = 0 (exponentially accurate for this smooth, fast-decaying integrand).
-  constexpr int kNodes = 33;
-  const double sd = std::sqrt(2.0 / nu);
-  double sum = 0.0;
-  for (int i = 0; i < kNodes; ++i) {
-    const double y = sd * (-10.0 + 20.0 * i / (kNodes - 1));
-    mixture_y_.push_back(y);
-    mixture_w_.push_back(std::exp(0.5 * nu * (y - std::expm1(y) - 1.0) + 0.5 * nu));
-    sum += mixture_w_.back();
-  }
-  for (double& w : mixture_w_) w /= sum;
+  // ln of the normalisation of the density of y = ln(W/ν), W ~ χ²_ν (log_slab_mixture).
+  mixture_log_norm_ = 0.5 * nu * std::log(0.5 * nu) - std::lgamma(0.5 * nu);
+  mixture_terms_.resize(33);
   c_.k = k_;
   c_.nu = nu;
 }
@@ -146,27 +138,60 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
     sum_outside += outside;
     log_min_inside = std::min(log_min_inside, log_inside);
   }
-  // Directions v_j = W⁻¹e_j, e_j the eigenvectors of W⁻¹M⁻¹W⁻¹ (the covariance in box units, W =
-  // diag(box widths)), are M⁻¹-orthogonal, so the projections v_jᵀr are uncorrelated univariate t's of scale
-  // √(S_min/ν · e_jᵀW⁻¹M⁻¹W⁻¹e_j) (docs/method.md, "Truncation by the residue box"). Each interval
-  // probability P(v_jᵀr ∈ v_jᵀ·box), vᵀ·box = [Σ min(v_k lo_k, v_k hi_k), Σ max(…)], is an upper bound of
-  // P_box; their product P_× accounts for every degenerate direction at once (two or more coinciding
-  // poles) and is what the sampler uses, clamped to [P_lo, P_up].
+  // Upper bounds of P_box from slabs (docs/method.md, "The box mass the sampler uses"). In box units t =
+  // W⁻¹(r − r̂) (W = diag(box widths)) the covariance is B = W⁻¹M⁻¹W⁻¹ · S_min/ν; for any direction u the
+  // projection uᵀt is a univariate t of scale √(uᵀBu · S_min/ν) and P(uᵀt ∈ uᵀ·box) ≥ P_box (vᵀ·box =
+  // [Σ min(v_k lo_k, v_k hi_k), Σ max(…)], v = W⁻¹u in r). Directions that are B-orthogonal give projections
+  // that are independent given the t's scale variable, so the product of their slab probabilities, averaged
+  // over that variable, is an upper bound P_× that accounts for every direction at once.
+  //  - r̂ inside the box: the eigenvectors of B (the directions in which the t is widest relative to the box
+  //    come first; they are tight where residues are nearly degenerate).
+  //  - r̂ outside: first u₁ = W D⁻¹ d with d = M̃(y* − ŷ), y* the box-constrained minimiser of S in Jacobi-scaled
+  //    coordinates y = D⁻¹r (inference/box_least_squares.hpp). Its slab starts at the supporting half-space
+  //    of the box at y*, c_h = min over the box of dᵀ(y − ŷ) = (y* − ŷ)ᵀd = S(r*) − S_min at the true minimiser:
+  //    this accounts for every violated face at once, P ≤ P(T ≥ √(ν(S(r*) − S_min)/S_min)). The others are the
+  //    eigenvectors of ΠBΠ, Π the projector orthogonal to Bu₁ (so B-orthogonal to u₁ and to each other).
+  //    Any y* in the box gives valid bounds; only their tightness needs the exact minimiser.
   int cut = 0;  // directions whose slab holds less than 1 − 1e-12 of the t
   double log_product = 0.0;
   // When no coordinate marginal reaches a face (every tail beyond the negligible quantile is exactly 0),
   // P_lo = P_up = 1 and the clamp below gives P̃ = 1 whatever the slabs say: no eigendecomposition.
-  if (p_ > 1 && sum_outside > 0.0) {
+  int slabs = 0;
+  if (sum_outside > 0.0) {
     const Eigen::ArrayXd& width = width_;
     box_cov_.noalias() = inv_chol_ * (c.scale.array() / width).matrix().asDiagonal();  // L̃⁻¹ D W⁻¹
-    scaled_.noalias() = box_cov_.transpose() * box_cov_;
-    eigen_.compute(scaled_);
-    for (Eigen::Index j = 0; j < p_; ++j) {
-      const double var = eigen_.eigenvalues()[j] * c.s_min / c.nu;
+    const Eigen::MatrixXd b_cov = box_cov_.transpose() * box_cov_;                   // B (without S_min/ν)
+    directions_.resize(p_, p_);
+    m_scaled_ = scaled_;  // M̃
+    box_a_ = lo_.cwiseQuotient(c.scale);
+    box_b_ = hi_.cwiseQuotient(c.scale);
+    const Eigen::VectorXd y_star = box_least_squares(m_scaled_, mean_scaled_, box_a_, box_b_);
+    const Eigen::VectorXd d = m_scaled_ * (y_star - mean_scaled_);
+    int first = 0;
+    if (d.squaredNorm() > 0.0 && (y_star - mean_scaled_).dot(d) > 0.0) {
+      directions_.col(0) = (width.matrix().cwiseProduct(d).cwiseQuotient(c.scale));
+      first = 1;
+    }
+    if (first == 1 && p_ > 1) {
+      const Eigen::VectorXd w = (b_cov * directions_.col(0)).normalized();
+      const Eigen::MatrixXd proj = Eigen::MatrixXd::Identity(p_, p_) - w * w.transpose();
+      eigen_.compute(proj * b_cov * proj);
+      Eigen::Index null_index = 0;  // the eigenvector along w (eigenvalue 0)
+      (eigen_.eigenvectors().transpose() * w).cwiseAbs().maxCoeff(&null_index);
+      for (Eigen::Index j = 0, k = 1; j < p_; ++j)
+        if (j != null_index) directions_.col(k++) = eigen_.eigenvectors().col(j);
+    } else if (first == 0 && p_ > 1) {
+      eigen_.compute(b_cov);
+      directions_ = eigen_.eigenvectors();
+    }
+    slabs = (first == 1 || p_ > 1) ? static_cast<int>(p_) : 0;
+    for (Eigen::Index j = 0; j < slabs; ++j) {
+      const Eigen::VectorXd u = directions_.col(j);
+      const double var = u.dot(b_cov * u) * c.s_min / c.nu;
       slab_lo_[j] = -std::numeric_limits<double>::infinity();
       slab_hi_[j] = std::numeric_limits<double>::infinity();
       if (!(var > 0.0) || !std::isfinite(var)) continue;
-      v_ = eigen_.eigenvectors().col(j).cwiseQuotient(width.matrix());
+      v_ = u.cwiseQuotient(width.matrix());
       const Eigen::VectorXd& v = v_;
       double lo_v = 0.0, hi_v = 0.0;
       for (Eigen::Index k = 0; k < p_; ++k) {
@@ -179,41 +204,71 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
       double inside, outside, log_inside;
       interval(-slab_lo_[j], slab_hi_[j], inside, outside, log_inside);
       log_min_inside = std::min(log_min_inside, log_inside);
-      log_product += outside < 0.5 ? std::log1p(-outside) : std::log(std::max(inside, 1e-300));
+      log_product += outside < 0.5 ? std::log1p(-outside) : log_inside;
       if (outside > 1e-12) ++cut;
     }
   }
+  slab_count_ = slabs;
   c.log_p_up = log_min_inside;
   c.log_p_lo = sum_outside < 1.0 ? std::log1p(-sum_outside) : -std::numeric_limits<double>::infinity();
   // P̃: with one cut direction the product is that slab's exact t probability; with several the slabs
   // share the t's scale variable W ~ χ²_ν, so P̃ = E_W[Π_j P_j | W] (Gaussian slabs given W; quadrature in
   // ln W). Where P_up < 1e-6 (residues far outside the box: no posterior weight) P̃ = P_up.
-  c.log_p_sampled = c.log_p_up;
-  if (c.log_p_up > std::log(1e-6)) {
-    c.log_p_sampled = cut <= 1 ? log_product : log_slab_mixture();
-    c.log_p_sampled = std::clamp(c.log_p_sampled, c.log_p_lo, c.log_p_up);
-  }
+  c.log_p_sampled = cut <= 1 ? log_product : log_slab_mixture();
+  c.log_p_sampled = std::clamp(c.log_p_sampled, c.log_p_lo, c.log_p_up);
   c.log_marginal = constant_ - 0.5 * c.nu * std::log(c.s_min) - 0.5 * log_det_m + c.log_p_sampled;
   c.valid = std::isfinite(c.log_marginal);
   return c;
 }
 
-double ResidueMarginal::log_slab_mixture() const {
-  // Given W the slab coordinates are independent normals N(0, ν/W); trapezoid nodes on y = ln(W/ν)
-  // (weights ∝ the χ²_ν density of W times W, normalised to sum 1).
-  double total = 0.0;
-  for (std::size_t i = 0; i < mixture_y_.size(); ++i) {
-    const double root = std::exp(0.5 * mixture_y_[i]);  // √(W/ν)
-    double prob = mixture_w_[i];
-    for (Eigen::Index j = 0; j < p_ && prob > 0.0; ++j) {
-      const double a = slab_lo_[j] * root, b = slab_hi_[j] * root;
-      prob *= a > 0.0 ? 0.5 * (std::erfc(a / std::sqrt(2.0)) - std::erfc(b / std::sqrt(2.0)))
-              : b < 0.0 ? 0.5 * (std::erfc(-b / std::sqrt(2.0)) - std::erfc(-a / std::sqrt(2.0)))
-                        : 1.0 - 0.5 * (std::erfc(-a / std::sqrt(2.0)) + std::erfc(b / std::sqrt(2.0)));
-    }
-    total += prob;
+namespace {
+
+/// ln P(a ≤ Z ≤ b), Z standard normal, from upper tails on the side away from 0; beyond the range of erfc
+/// the asymptotic series ln Q(x) = −x²/2 − ln(x√(2π)) + ln(1 − 1/x² + 3/x⁴) (relative error < 2e-8 for x > 30).
+double log_normal_interval(double a, double b) {
+  if (b <= 0.0) return log_normal_interval(-b, -a);
+  const auto log_q = [](double x) {
+    if (x < 30.0) return std::log(0.5 * std::erfc(x / std::sqrt(2.0)));
+    const double x2 = x * x;
+    return -0.5 * x2 - std::log(x) - 0.91893853320467274 + std::log1p(-1.0 / x2 + 3.0 / (x2 * x2));
+  };
+  if (a > 0.0) {
+    const double la = log_q(a), lb = std::isfinite(b) ? log_q(b) : -std::numeric_limits<double>::infinity();
+    return la + std::log1p(-std::exp(lb - la));
   }
-  return std::log(std::max(total, 1e-300));
+  const double outside = (std::isfinite(a) ? 0.5 * std::erfc(-a / std::sqrt(2.0)) : 0.0) +
+                         (std::isfinite(b) ? 0.5 * std::erfc(b / std::sqrt(2.0)) : 0.0);
+  return std::log1p(-outside);
+}
+
+}  // namespace
+
+double ResidueMarginal::log_slab_mixture() const {
+  // Given W the slab coordinates are independent normals N(0, ν/W): E_W[Π_j P_j] as a trapezoid rule in
+  // y = ln(W/ν), whose density is f(y) = (ν/2)^{ν/2}/Γ(ν/2) · exp(ν/2 · (y − e^y)), sd ≈ √(2/ν). The integrand
+  // f(y) Π_j P_j(y) peaks near y₀ = −ln(1 + Σ_j δ_j²/ν), δ_j the distance of the centre from slab j (Gaussian
+  // tails e^{−δ²e^y/2} shift the χ² mode), with the same width: 33 nodes over y₀ ± 10 sd, in logs (far
+  // outside the box the product underflows).
+  double distance2 = 0.0;
+  for (int j = 0; j < slab_count_; ++j) {
+    const double dist = std::max({0.0, slab_lo_[j], -slab_hi_[j]});
+    distance2 += dist * dist;
+  }
+  const double nu = c_.nu, sd = std::sqrt(2.0 / nu), centre = -std::log1p(distance2 / nu);
+  constexpr int kNodes = 33;
+  const double step = 20.0 * sd / (kNodes - 1);
+  double best = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kNodes; ++i) {
+    const double y = centre + sd * (-10.0 + 20.0 * i / (kNodes - 1)), root = std::exp(0.5 * y);  // √(W/ν)
+    double term = mixture_log_norm_ + 0.5 * nu * (y - std::exp(y)) + std::log(step);
+    for (int j = 0; j < slab_count_; ++j) term += log_normal_interval(slab_lo_[j] * root, slab_hi_[j] * root);
+    mixture_terms_[static_cast<std::size_t>(i)] = term;
+    best = std::max(best, term);
+  }
+  if (!std::isfinite(best)) return -std::numeric_limits<double>::infinity();
+  double sum = 0.0;
+  for (double t : mixture_terms_) sum += std::exp(t - best);
+  return best + std::log(sum);
 }
 
 double ResidueMarginal::operator()(const double* poles) const { return conditional(poles).log_marginal; }

@@ -82,11 +82,16 @@ class ResidueMarginal {
   mutable Eigen::LLT<Eigen::MatrixXd> llt_;
   /// ln E_W[Π_j P(slab_j | W)] over the cut slabs (slab_lo_/slab_hi_ in units of the t scale).
   double log_slab_mixture() const;
-  std::vector<double> mixture_y_, mixture_w_;  ///< quadrature over ln(W/ν)
+  double mixture_log_norm_ = 0.0;             ///< ln[(ν/2)^{ν/2}/Γ(ν/2)]
+  mutable std::vector<double> mixture_terms_;  ///< ln of the quadrature terms over ln(W/ν)
+  mutable int slab_count_ = 0;                 ///< slabs in slab_lo_/slab_hi_
+  mutable Eigen::MatrixXd directions_;         ///< slab directions in box units (columns)
   mutable Eigen::ArrayXd slab_lo_, slab_hi_;
   mutable Eigen::MatrixXd box_cov_;
   mutable Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_;
   mutable Eigen::ArrayXd dp_, dm_, inv_;
+  mutable Eigen::MatrixXd m_scaled_;         ///< M̃ for the box-constrained minimum
+  mutable Eigen::VectorXd box_a_, box_b_;  ///< the box in Jacobi-scaled coordinates
   mutable ResidueConditional c_;
 };
 

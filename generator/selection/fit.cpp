@@ -27,7 +27,7 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 SamplerKind parse_sampler_kind(const std::string& text) {
   if (text == "poles") return SamplerKind::poles;
   if (text == "full") return SamplerKind::full;
-  throw InputError(fmt::format("{} '{}': expected full (default) or poles", setting("sampler_kind"), text));
+  throw InputError(fmt::format("{} '{}': expected poles (default) or full", setting("sampler_kind"), text));
 }
 
 Model order_model(const Measurement& data, const Order& order, const FitSettings& settings) {
@@ -98,7 +98,7 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
     result.sampler_note = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
   } else {
     result = run_poles(data, order, settings, progress, round);
-    constexpr double kMinEssRatio = 0.5;
+    constexpr double kMinEssRatio = 0.25;
     if (!(result.truncation_correction_error <= settings.truncation_tolerance &&
           result.reweighted_ess_ratio >= kMinEssRatio)) {
       const std::string why = fmt::format(

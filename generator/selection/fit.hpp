@@ -47,11 +47,12 @@ struct FitSettings {
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;
-  /// full by default: the pole sampler is not yet validated everywhere (docs/method.md, "Status").
-  SamplerKind sampler_kind = SamplerKind::full;
+  /// poles by default (docs/method.md, "Status of the pole sampler"); full for cross-checks.
+  SamplerKind sampler_kind = SamplerKind::poles;
   /// The pole sampler's box correction (inference/poles_sampler.hpp) is accepted when its Monte Carlo
   /// error is at most this (nats; a fraction of the sampling error √(H/n) ≈ 0.2-0.6 of the default
-  /// runs) and the reweighting keeps at least half the effective sample size; otherwise the order is
+  /// runs) and the reweighting keeps at least a quarter of the effective sample size (the sampling error
+  /// is then divided by √(ratio), inference/poles_sampler.hpp); otherwise the order is
   /// re-run with the full sampler.
   double truncation_tolerance = 0.05;
   /// How many real poles and how many pairs the grid may gain beyond qmax/smax when the selected order lies
