@@ -124,9 +124,9 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                 "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
                 "truncated to passive models");
   add_parsed_option(*sub, "--sampler", s.sampler_kind, parse_sampler_kind,
-                    "poles (default): sample the poles, integrate the residues "
+                    "full (default): sample every parameter; poles: sample the poles, integrate the residues "
                     "analytically (falls back to full per order where the residue box cannot be corrected for; "
-                    "fit.json says which ran); full: sample every parameter")
+                    "fit.json says which ran)")
       ->check(CLI::IsMember({"poles", "full"}))->default_str(s.sampler_kind == SamplerKind::full ? "full" : "poles");
 }
 

@@ -47,8 +47,9 @@ struct FitSettings {
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;
-  /// poles by default (docs/method.md, "Status of the pole sampler"); full for cross-checks.
-  SamplerKind sampler_kind = SamplerKind::poles;
+  /// full by default: the pole sampler still falls back to the full sampler on some over-complete orders,
+  /// and a fallback's evidence can then win the selection (docs/method.md, "Status of the pole sampler").
+  SamplerKind sampler_kind = SamplerKind::full;
   /// The pole sampler's box correction (inference/poles_sampler.hpp) is accepted when its Monte Carlo
   /// error is at most this (nats; a fraction of the sampling error √(H/n) ≈ 0.2-0.6 of the default
   /// runs) and the reweighting keeps at least a quarter of the effective sample size (the sampling error
