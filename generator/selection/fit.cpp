@@ -303,13 +303,12 @@ GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::
   const int k = real_data_count(settings.data_count, data.size());
   double spent = 0.0;
   for (;;) {
-    double step_calls = 0.0;
     const auto step = next_grid_step(results, select_order(settings, results), growth.qmax, growth.smax, settings, k,
-                                     spent, std::max(first_round_calls, kMinGrowthBudgetCalls), step_calls, growth.edge);
+                                     spent, std::max(first_round_calls, kMinGrowthBudgetCalls), growth.edge);
     if (!step) return growth;
     progress.message(step->reason);
     growth.steps.push_back(step->reason);
-    spent += step_calls;
+    spent += step->calls;
     std::vector<Order> grown = order_grid(step->qmax, step->smax);
     std::vector<ModelResult> merged(grown.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
     std::vector<int> merged_rounds(grown.size(), 0);

@@ -39,10 +39,8 @@ const ModelResult* rising_from(const std::vector<ModelResult>& models, const Mod
 
 std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, std::size_t selected, int qmax,
                                        int smax, const FitSettings& settings, int real_data_values,
-                                       double spent_calls, double budget_calls, double& step_calls,
-                                       std::string& refusal) {
+                                       double spent_calls, double budget_calls, std::string& refusal) {
   refusal.clear();
-  step_calls = 0.0;
   const ModelResult& best = models.at(selected);
   const Order chosen = best.order;
   const ModelResult* q_inner = chosen.q() == qmax ? rising_from(models, best, 'Q') : nullptr;
@@ -73,12 +71,12 @@ std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, s
                           chosen.name(), edge, largest.name(), real_data_values);
     return std::nullopt;
   }
-  for (const Order& o : step.add) step_calls += estimated_calls(models, o);
-  if (spent_calls + step_calls > budget_calls) {
+  for (const Order& o : step.add) step.calls += estimated_calls(models, o);
+  if (spent_calls + step.calls > budget_calls) {
     refusal = fmt::format("{} lies on {} of the grid; growing it to Q0-{} x S0-{} would cost about {:.3g} M likelihood "
                           "calls, beyond the budget ({:.3g} M left of the first round's {:.3g} M); larger orders were "
                           "not tried (raise {}/{} to include them)",
-                          chosen.name(), edge, step.qmax, step.smax, 1e-6 * step_calls,
+                          chosen.name(), edge, step.qmax, step.smax, 1e-6 * step.calls,
                           1e-6 * std::max(0.0, budget_calls - spent_calls), 1e-6 * budget_calls, setting("qmax"),
                           setting("smax"));
     return std::nullopt;

@@ -39,6 +39,7 @@ inline constexpr double kMinGrowthBudgetCalls = 5e6;
 struct GridStep {
   std::vector<Order> add;  ///< the new orders, Q-major
   int qmax = 0, smax = 0;  ///< the grid after the step
+  double calls = 0.0;      ///< the added orders' estimated likelihood calls together (the budget's measure)
   std::string reason;      ///< e.g. "Q3S3 lies on the edge S = smax = 3: added S = 4 for Q0-3"
 };
 
@@ -47,7 +48,6 @@ struct GridStep {
 /// calls of the steps already taken, `budget_calls` the budget for all of them together.
 std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, std::size_t selected, int qmax,
                                        int smax, const FitSettings& settings, int real_data_values,
-                                       double spent_calls, double budget_calls, double& step_calls,
-                                       std::string& refusal);
+                                       double spent_calls, double budget_calls, std::string& refusal);
 
 }  // namespace admitgen

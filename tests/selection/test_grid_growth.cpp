@@ -44,7 +44,6 @@ std::size_t index_of(const std::vector<ModelResult>& models, const Order& o) {
 
 struct Step {
   std::optional<GridStep> step;
-  double calls = 0.0;
   std::string refusal;
 };
 
@@ -55,7 +54,7 @@ Step step_of(const std::vector<ModelResult>& models, const Order& selected, int 
   settings.smax = 1;
   settings.grid_growth = growth;
   Step r;
-  r.step = next_grid_step(models, index_of(models, selected), qmax, smax, settings, k, spent, budget, r.calls, r.refusal);
+  r.step = next_grid_step(models, index_of(models, selected), qmax, smax, settings, k, spent, budget, r.refusal);
   return r;
 }
 
@@ -83,13 +82,13 @@ TEST_CASE("grid growth: the rule on hand-made evidence grids") {
     CHECK(r.step->add[1] == Order(1, 2));
     // Estimated calls c·(D/d)² from the largest fitted order Q1S1 (d = 7, c = 1000): Q0S2 (D = 9) and Q1S2
     // (D = 11) cost 1000·(81 + 121)/49 = 4122.45 calls.
-    CHECK(r.calls == doctest::Approx(1000.0 * (81.0 + 121.0) / 49.0).epsilon(1e-12));
+    CHECK(r.step->calls == doctest::Approx(1000.0 * (81.0 + 121.0) / 49.0).epsilon(1e-12));
     CHECK(r.step->reason.find("Q0S1 lies on the edge S = 1") != std::string::npos);
     CHECK(r.step->reason.find("added S = 2 for Q0-1") != std::string::npos);
     // The budget is exact: one call short refuses, the exact figure passes.
-    CHECK_FALSE(step_of(g, Order(0, 1), 1, 1, 2, 400, 0.0, r.calls - 1.0).step);
-    CHECK(step_of(g, Order(0, 1), 1, 1, 2, 400, 0.0, r.calls).step);
-    const Step over = step_of(g, Order(0, 1), 1, 1, 2, 400, 1.0, r.calls);
+    CHECK_FALSE(step_of(g, Order(0, 1), 1, 1, 2, 400, 0.0, r.step->calls - 1.0).step);
+    CHECK(step_of(g, Order(0, 1), 1, 1, 2, 400, 0.0, r.step->calls).step);
+    const Step over = step_of(g, Order(0, 1), 1, 1, 2, 400, 1.0, r.step->calls);
     CHECK_FALSE(over.step);
     CHECK(over.refusal.find("beyond the budget") != std::string::npos);
   }
