@@ -12,7 +12,10 @@
 /// any point of the box; only its tightness needs the true minimiser).
 ///
 /// No Debian package offers a bounded least-squares or box-QP solver for C++ (Eigen has none; qpOASES,
-/// OSQP and eiquadprog are not packaged), and p ≤ 10 here, so the method is written out.
+/// OSQP and eiquadprog are not packaged), and p ≤ 10 here, so the method is written out. The project's
+/// general solver, numerics/least_squares_inequality.hpp (LSI through NNLS, Lawson & Hanson), solves the same
+/// problem with G = [I; −I], h = [lo; −hi], but through the dual: its iterates need not lie in the box when
+/// it stops early, and it costs an NNLS of 2p constraints per call on the likelihood's hot path.
 #pragma once
 
 #include <Eigen/Core>
