@@ -22,11 +22,10 @@ bool holds(const std::vector<ExplanationStep>& steps, std::size_t candidate) {
                      [candidate](const ExplanationStep& s) { return s.candidate == candidate; });
 }
 
-/// The candidates of `steps`, in step order.
-std::vector<const EffectCandidate*> member_candidates(const std::vector<ExplanationStep>& steps,
-                                                     const std::vector<EffectCandidate>& candidates) {
-  std::vector<const EffectCandidate*> out;
-  for (const auto& s : steps) out.push_back(&candidates[s.candidate]);
+/// The candidate indices of `steps`, in step order.
+std::vector<std::size_t> member_indices(const std::vector<ExplanationStep>& steps) {
+  std::vector<std::size_t> out;
+  for (const auto& s : steps) out.push_back(s.candidate);
   return out;
 }
 
@@ -42,16 +41,22 @@ struct Search {
   const EffectLikelihood likelihood;
   double log_z_none = 0.0;
 
+  /// The joint candidate of each list of candidate indices (combine_effects, members in list order).
+  std::vector<EffectCandidate> combined(const std::vector<std::vector<std::size_t>>& models) const {
+    std::vector<EffectCandidate> out;
+    for (const auto& m : models) {
+      std::vector<const EffectCandidate*> with;
+      for (const std::size_t i : m) with.push_back(&candidates[i]);
+      out.push_back(combine_effects(with));
+    }
+    return out;
+  }
+
   /// Jointly fitted models of candidate lists, on the seed streams from first_stream on.
   std::vector<EffectResult> evaluate(const std::vector<std::vector<std::size_t>>& models, double log_z_floor,
                                      std::uint64_t first_stream) const {
     if (models.empty()) return {};
-    std::vector<EffectCandidate> tried;
-    for (const auto& m : models) {
-      std::vector<const EffectCandidate*> with;
-      for (const std::size_t i : m) with.push_back(&candidates[i]);
-      tried.push_back(combine_effects(with));
-    }
+    const std::vector<EffectCandidate> tried = combined(models);
     std::vector<EffectResult> out =
         evaluate_candidates(tried, likelihood, settings, log_z_floor, first_stream, progress);
     for (std::size_t k = 0; k < out.size(); ++k) fill_gap(out[k], tried[k], f_hz, y_real, gap_before);
@@ -85,8 +90,7 @@ struct Search {
 /// (kMax − 1)·n streams after those, so the search stays independent of the thread count.
 void swap_round(const Search& search, std::uint64_t round, Explanation& out) {
   const std::size_t n = search.candidates.size();
-  std::vector<std::size_t> members;
-  for (const auto& s : out.steps) members.push_back(s.candidate);
+  const std::vector<std::size_t> members = member_indices(out.steps);
   std::vector<std::vector<std::size_t>> swapped;
   for (std::size_t j = 0; j + 1 < members.size(); ++j)
     for (std::size_t i = 0; i < n; ++i) {
@@ -124,7 +128,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
   for (const auto& r : identification.effects) singles[r.candidate] = r;
   const Search search{f_hz, y_real, gap_before, candidates, singles, settings, progress,
                       EffectLikelihood(y_real), identification.log_z_none};
-  const double log_z_none = identification.log_z_none;
+  const double log_z_none = search.log_z_none;
   if (singles.empty()) return out;
   const std::size_t n = candidates.size();
   const std::size_t first = best_of(singles);
@@ -136,16 +140,16 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     // cannot see, may still be missing.
     const bool white = out.joint.gap_after.whiteness.white;
     std::vector<std::size_t> added;
-    std::vector<EffectCandidate> tried;
+    std::vector<std::vector<std::size_t>> models;
     for (std::size_t i = 0; i < n; ++i) {
       if (holds(out.steps, i)) continue;
       if (white && candidates[i].stage != EffectStage::noise) continue;
-      std::vector<const EffectCandidate*> with = member_candidates(out.steps, candidates);
-      with.push_back(&candidates[i]);
+      models.push_back(member_indices(out.steps));
+      models.back().push_back(i);
       added.push_back(i);
-      tried.push_back(combine_effects(with));
     }
-    if (tried.empty()) break;
+    if (models.empty()) break;
+    const std::vector<EffectCandidate> tried = search.combined(models);
     std::vector<EffectResult> results =
         evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z, round * n, progress);
     out.rounds.push_back(results);
