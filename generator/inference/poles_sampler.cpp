@@ -7,6 +7,8 @@
 #include "inference/residue_draws.hpp"
 #include "inference/residue_marginal.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -39,14 +41,98 @@ Model pole_model(const Order& order, const PoleTransform& transform, const Resid
                [&marginal](const double* psi) { return marginal(psi); }, [&transform](double* u) { transform.fold(u); }};
 }
 
+/// The poles with the box mass as coordinates (docs/method.md, "Sampling the box mass"): θ_ext = (ψ, u_W,
+/// u_1 … u_p), ln L_ext = ln L_untruncated(ψ) + ln of the GHK replicate made from W = F⁻¹_χ²(u_W) and
+/// u_1 … u_p (BoxMassSimulator::log_replicate), whose integral over the u cube is P_box(ψ). ψ is folded to
+/// its canonical copy inside the transform, so L_ext is invariant under the fold of the pole coordinates
+/// (the replicate's coordinate order follows ψ).
+struct BoxCoordinates {
+  const Order& order;
+  const PoleTransform& transform;
+  const ResidueMarginal& marginal;
+  int dim;
+  std::vector<double> u_poles;
+
+  Model model() {
+    std::vector<std::string> names = pole_model(order, transform, marginal).parameter_names;
+    names.emplace_back("box_w");
+    for (int k = 1; k < static_cast<int>(marginal.box_lo().size()) + 1; ++k) names.push_back(fmt::format("box_u{}", k));
+    return Model{std::move(names),
+                 [this](const double* u, double* theta) {
+                   u_poles.assign(u, u + dim);
+                   transform.fold(u_poles.data());
+                   transform(u_poles.data(), theta);
+                   std::copy(u + dim, u + dim + 1 + marginal.box_lo().size(), theta + dim);
+                 },
+                 [this](const double* theta) { return log_likelihood(theta); },
+                 [this](double* u) { transform.fold(u); }};
+  }
+
+  double log_likelihood(const double* theta) const {
+    const ResidueConditional& c = marginal.untruncated(theta);
+    if (!c.valid) return -std::numeric_limits<double>::infinity();
+    BoxMassSimulator simulator(c, marginal.box_lo(), marginal.box_hi());
+    return c.log_marginal + simulator.log_replicate(chi_square_quantile(c.nu, theta[dim]), theta + dim + 1, nullptr);
+  }
+
+  /// The residues a point of the run stands for (clamped to the box against rounding).
+  Eigen::VectorXd residues(const double* theta) const {
+    const ResidueConditional& c = marginal.untruncated(theta);
+    BoxMassSimulator simulator(c, marginal.box_lo(), marginal.box_hi());
+    Eigen::VectorXd deviation;
+    simulator.log_replicate(chi_square_quantile(c.nu, theta[dim]), theta + dim + 1, &deviation);
+    return (c.mean + deviation).cwiseMax(marginal.box_lo()).cwiseMin(marginal.box_hi());
+  }
+};
+
+/// The complete posterior of a run with the box mass sampled: every point's residues come from its own
+/// coordinates and its weight is already exact (no correction).
+void complete_box_sampled(const Measurement& data, const Order& order, DataCount count, const BoxCoordinates& box,
+                          const NestedRun& poles, PolesRun& out) {
+  NestedRun& run = out.run;
+  run = poles;
+  run.dim = order.dim();
+  run.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
+  const Likelihood likelihood(data, order, count);
+  double best_profile = -std::numeric_limits<double>::infinity();
+  std::vector<double> best_theta;
+  for (std::size_t i = 0; i < poles.size(); ++i) {
+    const double* point = poles.point(i);
+    double* theta = run.samples.data() + i * static_cast<std::size_t>(order.dim());
+    const Eigen::VectorXd r = box.residues(point);
+    assemble_theta(order, point, r, theta);
+    run.log_likelihood[i] = likelihood(theta);
+    const ResidueConditional& c = box.marginal.untruncated(point);
+    const double profile = -std::log(c.s_min);
+    if (profile > best_profile && in_residue_box(c.mean, box.marginal.box_lo(), box.marginal.box_hi())) {
+      best_profile = profile;
+      best_theta.assign(static_cast<std::size_t>(order.dim()), 0.0);
+      assemble_theta(order, point, c.mean, best_theta.data());
+    }
+  }
+  if (!best_theta.empty()) {
+    run.samples.insert(run.samples.end(), best_theta.begin(), best_theta.end());
+    run.log_likelihood.push_back(likelihood(best_theta.data()));
+    run.log_weight.push_back(-std::numeric_limits<double>::infinity());
+  }
+  run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
+}
+
 }  // namespace
 
 PolesRun run_poles_sampler(const Measurement& data, const Order& order, const PriorRanges& priors,
                            bool reduce_symmetry, DataCount count, const NestedSettings& settings,
-                           std::uint64_t draw_seed, const NestedProgressFn& progress) {
+                           std::uint64_t draw_seed, const NestedProgressFn& progress, BoxMassMethod box_mass) {
   const PoleTransform transform(order, priors, reduce_symmetry);
   const ResidueMarginal marginal(data, order, count, priors);
   const int dim = transform.dim();
+  if (box_mass == BoxMassMethod::sampled && dim > 0) {
+    BoxCoordinates box{order, transform, marginal, dim, {}};
+    PolesRun out;
+    out.box_mass = BoxMassMethod::sampled;
+    complete_box_sampled(data, order, count, box, run_nested_sampling(box.model(), settings, progress), out);
+    return out;
+  }
   const NestedRun poles =
       dim == 0 ? analytic_run(marginal, settings.live)
                : run_nested_sampling(pole_model(order, transform, marginal), settings, progress);

@@ -15,6 +15,19 @@
 
 namespace admitgen {
 
+/// How the pole sampler accounts for the residue box (docs/method.md, "Truncation by the residue box").
+enum class BoxMassMethod {
+  /// The sampled likelihood carries the bound P̃ of the box mass; after the run each point is reweighted by
+  /// P̂/P̃ (PolesRun::truncation_correction). Cheap, but the reweighting loses effective samples where P̃
+  /// and P_box differ by factors that vary over the posterior.
+  reweighted,
+  /// The box mass is integrated by the sampler itself: the χ²_ν scale W and p GHK uniforms join ψ as
+  /// coordinates (dimension Q + 2S + 1 + p), ln L_ext = ln L_untruncated(ψ) + ln(GHK replicate), whose
+  /// integral over those coordinates is L(ψ) exactly. No correction, no bound; each point's residues are
+  /// the replicate's own draw of the truncated t.
+  sampled,
+};
+
 struct PolesRun {
   /// Full θ per point (model/order.hpp packing), weights of the pole run. log_likelihood holds the full
   /// ln L(θ) of each stored θ. One extra point of zero weight (log_weight = −∞) ends the run: the poles
@@ -33,14 +46,16 @@ struct PolesRun {
   double reweighted_ess_ratio = 1.0;
   /// Posterior weight of the points whose residues came from the Gibbs fallback of draw_residues.
   double gibbs_weight = 0.0;
+  BoxMassMethod box_mass = BoxMassMethod::reweighted;
 };
 
 /// Runs the pole sampler for `order`. With no poles (Q0S0) the evidence is the closed form itself
 /// (stopped_by "analytic", error 0) and `settings.live` equal-weight draws of r form the posterior.
-/// `draw_seed` seeds the residue draws.
+/// `draw_seed` seeds the residue draws (BoxMassMethod::reweighted; the sampled method needs none).
 PolesRun run_poles_sampler(const Measurement& data, const Order& order, const PriorRanges& priors,
                            bool reduce_symmetry, DataCount count, const NestedSettings& settings,
-                           std::uint64_t draw_seed, const NestedProgressFn& progress = {});
+                           std::uint64_t draw_seed, const NestedProgressFn& progress = {},
+                           BoxMassMethod box_mass = BoxMassMethod::reweighted);
 
 /// GHK replicates for the box-mass estimates P̂ of one run (inference/residue_draws.hpp): kBoxDrawsPerPoint
 /// per point that needs one, at most kBoxDrawBudget in all, shared over the points in proportion to their

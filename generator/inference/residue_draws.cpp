@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "inference/residue_draws.hpp"
 
+#include "inference/normal_interval.hpp"
 #include "inference/student_t.hpp"
 
-#include <boost/math/special_functions/erf.hpp>
+#include <boost/math/special_functions/gamma.hpp>
 
 #include <Eigen/Cholesky>
 
@@ -32,32 +33,6 @@ Eigen::VectorXd gibbs(const ResidueConditional& c, const Eigen::VectorXd& lo, co
   return r;
 }
 
-/// Upper tail of the standard normal, Q(x) = P(Z > x), and its inverse.
-double normal_upper(double x) { return 0.5 * std::erfc(x / std::sqrt(2.0)); }
-double normal_upper_inverse(double q) { return std::sqrt(2.0) * boost::math::erfc_inv(2.0 * q); }
-
-/// P(l ≤ Z ≤ h) and a draw of Z given l ≤ Z ≤ h by inversion, from upper tails only on the side of the
-/// interval away from 0 (no probabilities near 1 subtracted). Returns the probability (0: interval
-/// beyond double precision; then u is left alone).
-double truncated_normal(double l, double h, double uniform, double& u) {
-  if (h <= 0.0) {  // mirror to the right of 0
-    const double p = truncated_normal(-h, -l, uniform, u);
-    u = -u;
-    return p;
-  }
-  if (l >= 0.0) {
-    const double ql = normal_upper(l), qh = normal_upper(h), p = ql - qh;
-    if (!(p > 0.0)) return 0.0;
-    u = std::clamp(normal_upper_inverse(std::max(qh + uniform * p, 1e-300)), l, h);
-    return p;
-  }
-  const double below = normal_upper(-l), above = normal_upper(h), p = 1.0 - below - above;
-  const double v = below + uniform * p;  // Φ(u)
-  u = std::clamp(v < 0.5 ? -normal_upper_inverse(std::max(v, 1e-300)) : normal_upper_inverse(std::max(1.0 - v, 1e-300)),
-                 l, h);
-  return p;
-}
-
 }  // namespace
 
 BoxMassSimulator::BoxMassSimulator(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi)
@@ -72,9 +47,8 @@ BoxMassSimulator::BoxMassSimulator(const ResidueConditional& c, const Eigen::Vec
   const double sigma = std::sqrt(c.s_min / c.nu);
   std::vector<double> mass(static_cast<std::size_t>(p));
   for (Eigen::Index k = 0; k < p; ++k) {
-    double unused = 0.0;
     const double sd = sigma * std::sqrt(cov(k, k));
-    mass[static_cast<std::size_t>(k)] = truncated_normal(a[k] / sd, b[k] / sd, 0.5, unused);
+    mass[static_cast<std::size_t>(k)] = log_normal_interval(a[k] / sd, b[k] / sd);
   }
   order_.resize(static_cast<std::size_t>(p));
   std::iota(order_.begin(), order_.end(), Eigen::Index{0});
@@ -92,19 +66,35 @@ BoxMassSimulator::BoxMassSimulator(const ResidueConditional& c, const Eigen::Vec
   }
   chol_ = Eigen::LLT<Eigen::MatrixXd>(permuted).matrixL();
   u_.resize(p);
+  uniforms_.resize(p);
 }
 
 double BoxMassSimulator::draw(Rng& rng) {
-  const double root_w = std::sqrt(chi_square_draw(c_.nu, rng) / c_.s_min);  // 1/σ, σ = √(S_min/W)
-  double estimate = 1.0;
+  const double w = chi_square_draw(c_.nu, rng);
+  for (Eigen::Index i = 0; i < uniforms_.size(); ++i) uniforms_[i] = rng.uniform();
+  return std::exp(log_replicate(w, uniforms_.data(), nullptr));
+}
+
+double BoxMassSimulator::log_replicate(double w, const double* uniforms, Eigen::VectorXd* deviation) {
+  const double root_w = std::sqrt(w / c_.s_min);  // 1/σ, σ = √(S_min/W)
+  double log_estimate = 0.0;
   for (Eigen::Index i = 0; i < u_.size(); ++i) {
     const double partial = chol_.row(i).head(i).dot(u_.head(i)), diag = chol_(i, i);
     const double l = (a_[i] * root_w - partial) / diag, h = (b_[i] * root_w - partial) / diag;
-    estimate *= truncated_normal(l, h, rng.uniform(), u_[i]);
-    if (!(estimate > 0.0)) return 0.0;
+    log_estimate += normal_interval_draw(l, h, uniforms[i], u_[i]);
   }
-  return estimate;
+  if (deviation) {  // r − r̂ = D (y − ŷ), y − ŷ = C u/root_w in the simulator's order
+    const Eigen::VectorXd y = chol_.triangularView<Eigen::Lower>() * u_ / root_w;
+    deviation->resize(u_.size());
+    for (Eigen::Index i = 0; i < u_.size(); ++i) {
+      const Eigen::Index k = order_[static_cast<std::size_t>(i)];
+      (*deviation)[k] = c_.scale[k] * y[i];
+    }
+  }
+  return log_estimate;
 }
+
+double chi_square_quantile(double nu, double u) { return 2.0 * boost::math::gamma_p_inv(0.5 * nu, u); }
 
 bool in_residue_box(const Eigen::VectorXd& r, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
   return (r.array() >= lo.array()).all() && (r.array() <= hi.array()).all();

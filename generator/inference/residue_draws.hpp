@@ -35,13 +35,24 @@ class BoxMassSimulator {
  public:
   BoxMassSimulator(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
   double draw(Rng& rng);  ///< one replicate
+  /// ln of the replicate made from given randomness: W (a χ²_ν value, e.g. chi_square_quantile) and p
+  /// uniforms in [0, 1), one per coordinate in the simulator's order, each turned into u_i by inversion
+  /// (inference/normal_interval.hpp). With `deviation` also the r − r̂ those u_i make: a draw of the
+  /// truncated t whose importance weight is the replicate. As a function of (W, uniforms) uniform on
+  /// their cube, its integral is P_box exactly (docs/method.md, "Sampling the box mass").
+  double log_replicate(double w, const double* uniforms, Eigen::VectorXd* deviation);
 
  private:
   const ResidueConditional& c_;
   std::vector<Eigen::Index> order_;
   Eigen::MatrixXd chol_;        ///< lower Cholesky factor of M̃⁻¹ in order_
   Eigen::VectorXd a_, b_, u_;   ///< bounds of y − ŷ per coordinate (order_), the drawn normals
+  Eigen::VectorXd uniforms_;    ///< draw()'s uniforms
 };
+
+/// The χ²_ν quantile at u ∈ [0, 1) (Boost.Math's inverse regularised incomplete gamma): W for
+/// BoxMassSimulator::log_replicate from a uniform coordinate.
+double chi_square_quantile(double nu, double u);
 
 /// Whether r lies in the box [lo, hi].
 bool in_residue_box(const Eigen::VectorXd& r, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);

@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "inference/box_least_squares.hpp"
+#include "inference/normal_interval.hpp"
 #include "inference/pole_space.hpp"
 #include "inference/student_t.hpp"
 #include "model/residue_basis.hpp"
@@ -77,39 +78,94 @@ void ResidueMarginal::fill_basis(const double* poles, Eigen::MatrixXd& a) const 
   }
 }
 
-const ResidueConditional& ResidueMarginal::conditional(const double* poles) const {
+bool ResidueMarginal::solve(const double* poles) const {
   ResidueConditional& c = c_;
   c.valid = false;
   c.log_marginal = -std::numeric_limits<double>::infinity();
+  c.log_p_up = c.log_p_lo = c.log_p_sampled = 0.0;
   // M = AᵀA and g = Aᵀb in one fused pass over the points (inference/residue_gram.hpp).
   c.m.resize(p_, p_);
   residue_gram(points_, order_.q(), order_.s(), poles, gram_work_.data(), c.m.data(), g_.data());
   const Eigen::VectorXd& g = g_;
   // Jacobi scaling: the columns differ by orders of magnitude (1 for G∞, ~1/λ for the poles).
   c.scale = c.m.diagonal().cwiseSqrt().cwiseInverse();
-  if (!c.scale.allFinite()) return c;
+  if (!c.scale.allFinite()) return false;
   scaled_ = c.scale.asDiagonal() * c.m * c.scale.asDiagonal();
   llt_.compute(scaled_);
-  if (llt_.info() != Eigen::Success) return c;
-  const auto& llt = llt_;
-  c.chol = llt.matrixL();
-  if (!(c.chol.diagonal().array() > 0.0).all()) return c;
-  mean_scaled_ = c.scale.cwiseProduct(g);
-  llt.solveInPlace(mean_scaled_);
-  c.mean = c.scale.cwiseProduct(mean_scaled_);
-  // S(r̂) = |b|² − 2gᵀr̂ + r̂ᵀMr̂ is second-order in the error of r̂ (the form |b|² − gᵀr̂ is first-order).
-  v_.noalias() = c.m * c.mean;
-  c.s_min = b_norm2_ - 2.0 * g.dot(c.mean) + c.mean.dot(v_);
-  if (!(c.s_min > 1e-12 * b_norm2_)) {  // cancellation: recompute from the stored basis
-    fill_basis(poles, a_);
-    c.s_min = (b_ - a_ * c.mean).squaredNorm();
+  bool normal_equations = llt_.info() == Eigen::Success;
+  if (normal_equations) {
+    c.chol = llt_.matrixL();
+    normal_equations = (c.chol.diagonal().array() > 0.0).all();
+  }
+  if (normal_equations) {
+    mean_scaled_ = c.scale.cwiseProduct(g);
+    llt_.solveInPlace(mean_scaled_);
+    // S(r̂) = |b|² − 2gᵀr̂ + r̂ᵀMr̂ is second-order in the error of r̂ (the form |b|² − gᵀr̂ is first-order),
+    // but it subtracts terms of size |ŷ|₁² (ŷ = D⁻¹r̂: each term's share of the fit in the data's norm) from
+    // |b|²: where the terms cancel each other (near-coincident poles with large opposite residues) its
+    // rounding error exceeds S_min itself (docs/method.md, "Accuracy of the normal equations").
+    normal_equations = mean_scaled_.lpNorm<1>() <= kNormalEquationsGrowth * std::sqrt(b_norm2_);
+  }
+  if (normal_equations) {
+    c.mean = c.scale.cwiseProduct(mean_scaled_);
+    v_.noalias() = c.m * c.mean;
+    c.s_min = b_norm2_ - 2.0 * g.dot(c.mean) + c.mean.dot(v_);
+    if (!(c.s_min > 1e-12 * b_norm2_)) {  // cancellation: recompute from the stored basis
+      fill_basis(poles, a_);
+      c.s_min = (b_ - a_ * c.mean).squaredNorm();
+    }
+  } else if (!solve_by_qr(poles)) {
+    return false;
   }
   c.s_min = std::max(c.s_min, 1e-300);
   const double log_det_m = 2.0 * (c.chol.diagonal().array().log().sum() - c.scale.array().log().sum());
+  c.log_untruncated = constant_ - 0.5 * c.nu * std::log(c.s_min) - 0.5 * log_det_m;
+  return std::isfinite(c.log_untruncated);
+}
+
+bool ResidueMarginal::solve_by_qr(const double* poles) const {
+  // Householder QR of the Jacobi-scaled basis A D = Q R: ŷ = R⁻¹Qᵀb, M̃ = RᵀR (L̃ = Rᵀ with the signs of
+  // R's diagonal made positive) and S_min = |b − A r̂|² from the explicit residual. Backward stability
+  // makes |A δr̂| of order ε(|b| + |ŷ|₁), so S_min is off by at most e_S = 2√S e + e², e = γ(|b| + |ŷ|₁)
+  // with γ = 4pε√(2N); where e_S exceeds 2 kSminLogTolerance/ν · S_min (ln L off by more than 0.01 nats) the
+  // poles are too close to coincident for double precision and ψ is left out (ln L = −∞; docs/method.md,
+  // "Accuracy of the normal equations", bounds what that leaves out).
+  ResidueConditional& c = c_;
+  fill_basis(poles, a_);
+  a_ = a_ * c.scale.asDiagonal();
+  qr_.compute(a_);
+  const auto r = qr_.matrixQR().topRows(p_).triangularView<Eigen::Upper>();
+  mean_scaled_ = (qr_.householderQ().transpose() * b_).head(p_);
+  r.solveInPlace(mean_scaled_);
+  c.chol = qr_.matrixQR().topRows(p_).transpose().triangularView<Eigen::Lower>();
+  for (Eigen::Index k = 0; k < p_; ++k)
+    if (c.chol(k, k) < 0.0) c.chol.col(k) = -c.chol.col(k);
+  if (!(c.chol.diagonal().array() > 0.0).all()) return false;
+  // M̃ and M as the factor has them (the Gram pass's copies carry the rounding this path avoids).
+  scaled_.noalias() = c.chol * c.chol.transpose();
+  c.m = c.scale.cwiseInverse().asDiagonal() * scaled_ * c.scale.cwiseInverse().asDiagonal();
+  c.mean = c.scale.cwiseProduct(mean_scaled_);
+  c.s_min = (b_ - a_ * mean_scaled_).squaredNorm();
+  const double gamma = 4.0 * p_ * std::numeric_limits<double>::epsilon() * std::sqrt(static_cast<double>(a_.rows()));
+  const double e = gamma * (std::sqrt(b_norm2_) + mean_scaled_.lpNorm<1>());
+  return 2.0 * std::sqrt(c.s_min) * e + e * e <= 2.0 * kSminLogTolerance / c.nu * c.s_min;
+}
+
+const ResidueConditional& ResidueMarginal::untruncated(const double* poles) const {
+  ResidueConditional& c = c_;
+  c.valid = solve(poles);
+  if (c.valid) c.log_marginal = c.log_untruncated;
+  return c;
+}
+
+const ResidueConditional& ResidueMarginal::conditional(const double* poles) const {
+  ResidueConditional& c = c_;
+  if (!solve(poles)) return c;
+  const auto llt = c.chol.triangularView<Eigen::Lower>();
 
   // Coordinate marginals: t_ν with scale s_k = √(S_min/ν · (M⁻¹)_kk), (M⁻¹)_kk = D_k² Σ_i (L̃⁻¹)_ik².
   inv_chol_.setIdentity(p_, p_);
-  llt.matrixL().solveInPlace(inv_chol_);
+  llt.solveInPlace(inv_chol_);
   const auto tail = [&](double z) { return tail_.upper(z); };
   // P(−z_lo ≤ T ≤ z_hi), its complement and ln of an upper bound of it, from upper tails only (no
   // cancellation against 1 when the centre lies outside the interval). Where the interval lies beyond
@@ -216,32 +272,10 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   // ln W). Where P_up < 1e-6 (residues far outside the box: no posterior weight) P̃ = P_up.
   c.log_p_sampled = cut <= 1 ? log_product : log_slab_mixture();
   c.log_p_sampled = std::clamp(c.log_p_sampled, c.log_p_lo, c.log_p_up);
-  c.log_marginal = constant_ - 0.5 * c.nu * std::log(c.s_min) - 0.5 * log_det_m + c.log_p_sampled;
+  c.log_marginal = c.log_untruncated + c.log_p_sampled;
   c.valid = std::isfinite(c.log_marginal);
   return c;
 }
-
-namespace {
-
-/// ln P(a ≤ Z ≤ b), Z standard normal, from upper tails on the side away from 0; beyond the range of erfc
-/// the asymptotic series ln Q(x) = −x²/2 − ln(x√(2π)) + ln(1 − 1/x² + 3/x⁴) (relative error < 2e-8 for x > 30).
-double log_normal_interval(double a, double b) {
-  if (b <= 0.0) return log_normal_interval(-b, -a);
-  const auto log_q = [](double x) {
-    if (x < 30.0) return std::log(0.5 * std::erfc(x / std::sqrt(2.0)));
-    const double x2 = x * x;
-    return -0.5 * x2 - std::log(x) - 0.91893853320467274 + std::log1p(-1.0 / x2 + 3.0 / (x2 * x2));
-  };
-  if (a > 0.0) {
-    const double la = log_q(a), lb = std::isfinite(b) ? log_q(b) : -std::numeric_limits<double>::infinity();
-    return la + std::log1p(-std::exp(lb - la));
-  }
-  const double outside = (std::isfinite(a) ? 0.5 * std::erfc(-a / std::sqrt(2.0)) : 0.0) +
-                         (std::isfinite(b) ? 0.5 * std::erfc(b / std::sqrt(2.0)) : 0.0);
-  return std::log1p(-outside);
-}
-
-}  // namespace
 
 double ResidueMarginal::log_slab_mixture() const {
   // Given W the slab coordinates are independent normals N(0, ν/W): E_W[Π_j P_j] as a trapezoid rule in

@@ -27,6 +27,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
 #include <vector>
 
@@ -45,8 +46,18 @@ struct ResidueConditional {
   double log_p_up = 0.0;       ///< ln P_up
   double log_p_lo = 0.0;       ///< ln P_lo (−∞ when the union bound gives 0)
   double log_p_sampled = 0.0;  ///< ln P̃, P_lo ≤ P̃ ≤ P_up: the product of the eigen-direction bounds
-  double log_marginal = 0.0;   ///< ln[(1/V_r) ∫ L dr] with P̃ in place of P_box
+  double log_untruncated = 0.0;  ///< ln[(1/V_r) ∫ L dr] over all of r (P_box = 1)
+  double log_marginal = 0.0;   ///< ln[(1/V_r) ∫ L dr] with P̃ in place of P_box (untruncated(): P_box = 1)
 };
+
+/// The normal equations are trusted while |ŷ|₁ ≤ this × |b| (ŷ = D⁻¹r̂, each term's share of the fit in the
+/// data's norm): the rounding of S_min = |b|² − ŷᵀM̃ŷ then stays near that of |b|² itself. Beyond it the
+/// terms cancel each other and S_min comes from a QR factorisation (docs/method.md, "Accuracy of the normal
+/// equations").
+constexpr double kNormalEquationsGrowth = 10.0;
+/// ln L may be off by at most this many nats through the rounding of S_min (ν/2 · δS/S ≤ this): otherwise ψ
+/// is left out.
+constexpr double kSminLogTolerance = 0.01;
 
 /// Holds data, basis and work buffers: one instance per thread.
 class ResidueMarginal {
@@ -57,6 +68,9 @@ class ResidueMarginal {
   double operator()(const double* poles) const;
   /// Everything about r given ψ.
   const ResidueConditional& conditional(const double* poles) const;
+  /// The same without the box: r̂, M, S_min and log_marginal = log_untruncated (the bounds stay 0). For
+  /// the sampler that integrates the box mass by its own coordinates (inference/poles_sampler.hpp).
+  const ResidueConditional& untruncated(const double* poles) const;
   /// Fills A = [Re Φ; Im Φ] (2N × p) at ψ: model/residue_basis.hpp's columns, vectorised over ω.
   void fill_basis(const double* poles, Eigen::MatrixXd& a) const;
 
@@ -93,6 +107,11 @@ class ResidueMarginal {
   mutable Eigen::MatrixXd m_scaled_;         ///< M̃ for the box-constrained minimum
   mutable Eigen::VectorXd box_a_, box_b_;  ///< the box in Jacobi-scaled coordinates
   mutable ResidueConditional c_;
+  /// Fills c_ up to log_untruncated; false when M is numerically singular.
+  bool solve(const double* poles) const;
+  /// solve()'s path where the normal equations cannot give S_min to the tolerance: QR of the basis.
+  bool solve_by_qr(const double* poles) const;
+  mutable Eigen::HouseholderQR<Eigen::MatrixXd> qr_;
 };
 
 }  // namespace admitgen

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 
 namespace admitgen {
@@ -224,11 +225,23 @@ std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
   M.topRightCorner(n, n) = -r_inv * B * B.transpose();
   M.bottomLeftCorner(n, n) = r_inv * C.transpose() * C;
   M.bottomRightCorner(n, n) = -A.transpose() + r_inv * C.transpose() * B.transpose();
+  // The real Schur iteration first; where it does not converge in its default 40 sweeps per row (badly
+  // scaled M: nearly coincident poles with large opposite residues), the complex Schur iteration (other
+  // shifts) with ten times the sweeps.
+  Eigen::VectorXcd eigenvalues;
   const Eigen::EigenSolver<Eigen::MatrixXd> es(M, false);
-  ADMITGEN_ENSURE(es.info() == Eigen::Success, "Hamiltonian eigenvalues did not converge");
+  if (es.info() == Eigen::Success) {
+    eigenvalues = es.eigenvalues();
+  } else {
+    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> ces;
+    ces.setMaxIterations(400 * M.rows());
+    ces.compute(M.cast<std::complex<double>>(), false);
+    ADMITGEN_ENSURE(ces.info() == Eigen::Success, "Hamiltonian eigenvalues did not converge");
+    eigenvalues = ces.eigenvalues();
+  }
   std::vector<double> out;
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const auto l = es.eigenvalues()[i];
+  for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) {
+    const auto l = eigenvalues[i];
     if (std::abs(l.real()) <= kImagTolerance * std::abs(l) + 1e-14 && l.imag() >= 0.0) out.push_back(w * l.imag());
   }
   std::sort(out.begin(), out.end());

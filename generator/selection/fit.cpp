@@ -70,12 +70,12 @@ ModelResult run_full(const Measurement& data, const Order& order, const FitSetti
 }
 
 ModelResult run_poles(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress, int round) {
+                      const NestedProgressFn& progress, int round, BoxMassMethod box_mass) {
   const NestedSettings sampler = order_sampler_settings(order, settings, round);
   PolesRun poles = run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
-                                     sampler, derive_seed(sampler.seed, 0x7e51dULL), progress);
+                                     sampler, derive_seed(sampler.seed, 0x7e51dULL), progress, box_mass);
   ModelResult result{order, std::move(poles.run), sampler.live, 0.0, {}};
-  result.sampler = "poles_analytic_residues";
+  result.sampler = poles.box_mass == BoxMassMethod::sampled ? "poles_box_mass_sampled" : "poles_analytic_residues";
   result.truncation_correction = poles.truncation_correction;
   result.truncation_correction_error = poles.truncation_correction_error;
   result.reweighted_ess_ratio = poles.reweighted_ess_ratio;
@@ -97,16 +97,18 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
     result = run_full(data, order, settings, progress, round);
     result.sampler_note = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
   } else {
-    result = run_poles(data, order, settings, progress, round);
+    result = run_poles(data, order, settings, progress, round, BoxMassMethod::reweighted);
     constexpr double kMinEssRatio = 0.25;
     if (!(result.truncation_correction_error <= settings.truncation_tolerance &&
           result.reweighted_ess_ratio >= kMinEssRatio)) {
       const std::string why = fmt::format(
           "the residue box truncates the conditional posterior of the residues too much to correct (correction "
-          "{:.3g} ± {:.3g} nats, tolerance {:.3g}; effective-sample ratio {:.2f}, minimum {:.2f}): sampled in full",
+          "{:.3g} ± {:.3g} nats, tolerance {:.3g}; effective-sample ratio {:.2f}, minimum {:.2f}): box mass sampled",
           result.truncation_correction, result.truncation_correction_error, settings.truncation_tolerance,
           result.reweighted_ess_ratio, kMinEssRatio);
-      result = run_full(data, order, settings, progress, round);
+      const long first_calls = result.run.calls;
+      result = run_poles(data, order, settings, progress, round, BoxMassMethod::sampled);
+      result.run.calls += first_calls;  // the reweighted run's calls were spent too
       result.sampler_note = why;
     }
   }
