@@ -54,7 +54,7 @@ SimulatedChange no_change(const EffectContext& c) {
 
 EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
                                  std::function<void(SimulatedChange&, const double*)> change) {
-  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c};
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c, {}};
   e.predict = [c, change](const double* t) {
     SimulatedChange s = no_change(*c);
     change(s, t);
@@ -65,7 +65,7 @@ EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> p
 
 EffectCandidate sample_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
                               std::function<Eigen::ArrayXcd(const Eigen::ArrayXcd&, const double*)> apply) {
-  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c};
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c, {}};
   e.predict = [c, apply](const double* t) { return plain(apply(c->y_sim, t)); };
   return e;
 }
@@ -82,7 +82,7 @@ EffectCandidate chain_effect(std::string name, std::vector<ParameterPrior> prior
                       d.mic_ratio *= own.mic_ratio;
                       d.reference_plane_m += own.reference_plane_m;
                     },
-                    {}, c};
+                    {}, c, {}};
   e.predict = [c, deviation](const double* t) { return plain(c->chain->measure(deviation(t))); };
   return e;
 }
@@ -143,7 +143,7 @@ EffectCandidate heteroscedastic_noise(const ContextPtr& c) {
           {},
           {},
           shape,
-          c};
+          c, {}};
 }
 
 EffectCandidate edge_gap(const ContextPtr& c) {
@@ -327,6 +327,11 @@ EffectPrediction compose(const EffectContext& c, const std::vector<EffectCandida
 
 double ParameterPrior::transform(double u) const {
   return shape == Shape::uniform ? lo + u * (hi - lo) : lo * std::pow(hi / lo, u);
+}
+
+double ParameterPrior::cdf(double theta) const {
+  const double u = shape == Shape::uniform ? (theta - lo) / (hi - lo) : std::log(theta / lo) / std::log(hi / lo);
+  return std::clamp(u, 0.0, 1.0);
 }
 
 std::string ParameterPrior::describe() const {

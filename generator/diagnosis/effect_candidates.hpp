@@ -30,6 +30,7 @@
 /// §5.1 i: "derivative-shaped" residual ∝ ω dY/dω); it applies to any simulated side.
 #pragma once
 
+#include "diagnosis/reference_prior.hpp"
 #include "diagnosis/simulated_side.hpp"
 #include "physics/synthetic_measurement.hpp"
 
@@ -52,6 +53,8 @@ struct ParameterPrior {
 
   /// θ from u ∈ [0, 1]: lo + u (hi − lo), or lo (hi/lo)^u.
   double transform(double u) const;
+  /// u from θ (the inverse of transform), clamped to [0, 1].
+  double cdf(double theta) const;
   /// e.g. "uniform [-0.01, 0.01]".
   std::string describe() const;
 };
@@ -89,6 +92,10 @@ struct EffectCandidate {
   std::function<void(ChainDeviation&, const double* theta)> deviate;
   std::function<Eigen::ArrayXd(const double* theta)> noise_shape;
   std::shared_ptr<const EffectContext> context;
+  /// Empty: nested sampling draws from the prior. Else one reference density per parameter
+  /// (diagnosis/reference_prior.hpp; set by the combined search from earlier posteriors): the sampler
+  /// draws u from q and weighs the likelihood by 1/q, the same evidence (effect_model).
+  std::vector<ReferenceDensity> reference;
 
   /// The name, and for material the parameter ("material 1.sigma"): unique among the candidates.
   std::string label() const;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "diagnosis/effect_identification.hpp"
 
+#include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "core/rng.hpp"
@@ -73,15 +74,25 @@ class CandidateProgress {
   std::map<std::string, std::tuple<double, double, double>> active_;  ///< name → (cost, first remaining, fraction)
 };
 
-/// Evidence, posterior and best ϑ of one candidate from its run.
-void take_run(const NestedRun& run, const Model& model, EffectResult& r) {
+/// Evidence, posterior and best ϑ of one candidate from its run. Under a reference density the run's
+/// likelihood is L/q: its posterior weights are those of L (docs/method.md), its best point is found
+/// on ln L = ln(L/q) + ln q.
+void take_run(const NestedRun& run, const Model& model, const EffectCandidate& candidate, EffectResult& r) {
   r.log_z = run.log_z;
   r.log_z_error = run.log_z_error;
   r.max_log_likelihood = run.max_log_likelihood;
   r.calls = run.calls;
   if (run.dim == 0) return;
   r.parameters = summarize(run, model.parameter_names);
-  const double* p = run.point(max_likelihood_index(run));
+  std::size_t best = max_likelihood_index(run);
+  if (!candidate.reference.empty()) {
+    r.max_log_likelihood = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < run.size(); ++i) {
+      const double log_l = run.log_likelihood[i] + reference_log_density(candidate, run.point(i));
+      if (log_l > r.max_log_likelihood) r.max_log_likelihood = log_l, best = i;
+    }
+  }
+  const double* p = run.point(best);
   r.best.assign(p, p + run.dim);
 }
 
@@ -166,11 +177,39 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
 Model effect_model(const EffectCandidate& e, const EffectLikelihood& likelihood) {
   std::vector<std::string> names;
   for (const auto& p : e.priors) names.push_back(p.name);
+  if (e.reference.empty())
+    return Model{std::move(names),
+                 [&e](const double* u, double* theta) {
+                   for (std::size_t k = 0; k < e.priors.size(); ++k) theta[k] = e.priors[k].transform(u[k]);
+                 },
+                 [&e, &likelihood](const double* theta) { return likelihood(e.predict(theta)); }};
+  ADMITGEN_ENSURE(e.reference.size() == e.priors.size(), "one reference density per parameter");
+  // The cube is q's (u = Q⁻¹(v)); the likelihood is L/q (docs/method.md, "Reference priors in the
+  // combined search").
   return Model{std::move(names),
-               [&e](const double* u, double* theta) {
-                 for (std::size_t k = 0; k < e.priors.size(); ++k) theta[k] = e.priors[k].transform(u[k]);
+               [&e](const double* v, double* theta) {
+                 for (std::size_t k = 0; k < e.priors.size(); ++k)
+                   theta[k] = e.priors[k].transform(e.reference[k].inverse_cdf(v[k]));
                },
-               [&e, &likelihood](const double* theta) { return likelihood(e.predict(theta)); }};
+               [&e, &likelihood](const double* theta) {
+                 return likelihood(e.predict(theta)) - reference_log_density(e, theta);
+               }};
+}
+
+std::vector<ReferenceDensity> reference_densities(const std::vector<ParameterPrior>& priors,
+                                                  const std::vector<ParameterSummary>& posterior, double uniform_share) {
+  std::vector<ReferenceDensity> out(priors.size());
+  if (posterior.size() != priors.size()) return out;
+  for (std::size_t k = 0; k < priors.size(); ++k)
+    out[k] = ReferenceDensity::from_interval(priors[k].cdf(posterior[k].ci95_lo), priors[k].cdf(posterior[k].ci95_hi),
+                                             kReferenceWidening, uniform_share);
+  return out;
+}
+
+double reference_log_density(const EffectCandidate& e, const double* theta) {
+  double out = 0.0;
+  for (std::size_t k = 0; k < e.reference.size(); ++k) out += e.reference[k].log_density(e.priors[k].cdf(theta[k]));
+  return out;
 }
 
 std::string describe_evidence_methods(const IdentificationSettings& s) {
@@ -187,6 +226,10 @@ std::string describe_evidence_methods(const IdentificationSettings& s) {
     text += fmt::format("; a round of the combined search screens its joint effects by nested sampling with {} live "
                         "points and runs in full those within {:g} deciban of the best or of decisive",
                         s.screen_live, kScreenDeciban);
+  text += fmt::format("; a joint effect of the combined search samples from a reference density on its prior "
+                      "(earlier posteriors widened {:g}x plus a uniform share) with the likelihood divided by it, "
+                      "the same evidence",
+                      kReferenceWidening);
   return text;
 }
 
@@ -229,7 +272,7 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
     timed(i, [&](EffectResult& r) {
       r.method = candidates[i].priors.empty() ? "closed_form" : "quadrature";
       const Model model = effect_model(candidates[i], likelihood);
-      take_run(evidence_by_quadrature(model, settings.quadrature), model, r);
+      take_run(evidence_by_quadrature(model, settings.quadrature), model, candidates[i], r);
       share.log_z = r.log_z;
     });
   };
@@ -251,7 +294,7 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
       const Model model = effect_model(candidates[i], likelihood);
       const NestedRun run =
           run_nested_sampling(model, sampler, [&](const NestedStatus& s) { status.running(candidates[i], s); }, stop);
-      take_run(run, model, r);
+      take_run(run, model, candidates[i], r);
     });
   };
   const std::vector<std::size_t> queue = schedule(candidates, likelihood, cheap, sampled, settings.threads);
@@ -283,6 +326,9 @@ std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>
     if (deciban(results[i].log_z, target) < -kScreenDeciban) continue;
     contenders.push_back(i);
     full.push_back(candidates[i]);
+    // Its full run samples from the screening run's posterior (the same evidence, docs/method.md).
+    if (full.back().priors.size() >= 2)
+      full.back().reference = reference_densities(full.back().priors, results[i].parameters, kReferenceShareJoint);
   }
   // Each contender keeps its seed stream first_stream + i, as without screening.
   std::vector<std::uint64_t> streams;

@@ -50,6 +50,16 @@ inline constexpr double kDecisiveDeciban = 20.0;
 /// decides the margin).
 inline constexpr double kEarlyStopDeciban = 100.0;
 
+/// A reference density's standard deviation, in units of the earlier posterior's (its 95 % interval over
+/// 3.92): information ln 4 − 15/32 ≈ 0.9 nat per parameter when the posterior sits where it sat before,
+/// against the several nats of compressing it from its prior.
+inline constexpr double kReferenceWidening = 4.0;
+/// Uniform shares: from a posterior of the same model (a screening run) or of the same member in the
+/// explanation, and from a member's single-effect posterior (which may sit elsewhere once the other
+/// members take their share of the gap).
+inline constexpr double kReferenceShareJoint = 0.1;
+inline constexpr double kReferenceShareSingle = 0.5;
+
 /// A screened joint candidate this far below the best and below decisive is not run in full
 /// (evaluate_contenders): 5 standard errors of a screening run's ln Z.
 inline constexpr double kScreenDeciban = 20.0;
@@ -112,7 +122,18 @@ bool early_stop_allowed(const NestedStatus& status, int live);
 
 /// A candidate as a model of the measurement (inference/model.hpp): its priors through the unit cube, the
 /// likelihood of its prediction. Holds references to both.
+/// With a reference density (EffectCandidate::reference) the cube is q's and the likelihood L/q: the
+/// same evidence (diagnosis/reference_prior.hpp).
 Model effect_model(const EffectCandidate& candidate, const EffectLikelihood& likelihood);
+
+/// ln q(u(θ)) of the candidate's reference densities (0 without).
+double reference_log_density(const EffectCandidate& candidate, const double* theta);
+
+/// Reference densities from an earlier posterior of the same parameters (docs/method.md, "Reference
+/// priors in the combined search"): each 95 % interval mapped to u, widened kReferenceWidening× with a
+/// uniform share; a parameter without a summary (posterior.size() ≠ priors.size()) keeps its prior.
+std::vector<ReferenceDensity> reference_densities(const std::vector<ParameterPrior>& priors,
+                                                  const std::vector<ParameterSummary>& posterior, double uniform_share);
 
 /// How the evidences are computed and the early-stop rule, in words (diagnosis.json "settings").
 std::string describe_evidence_methods(const IdentificationSettings& settings);

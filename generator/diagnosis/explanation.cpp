@@ -9,6 +9,7 @@
 namespace admitgen::diagnosis {
 namespace {
 
+
 /// The index of the largest evidence (the first on ties).
 std::size_t best_of(const std::vector<EffectResult>& results) {
   std::size_t best = 0;
@@ -41,22 +42,48 @@ struct Search {
   const EffectLikelihood likelihood;
   double log_z_none = 0.0;
 
-  /// The joint candidate of each list of candidate indices (combine_effects, members in list order).
-  std::vector<EffectCandidate> combined(const std::vector<std::vector<std::size_t>>& models) const {
+  /// The joint candidate of each list of candidate indices (combine_effects, members in list order),
+  /// sampled from the reference densities of what `now` and the single effects know (reference()).
+  std::vector<EffectCandidate> combined(const std::vector<std::vector<std::size_t>>& models,
+                                        const Explanation& now) const {
     std::vector<EffectCandidate> out;
     for (const auto& m : models) {
       std::vector<const EffectCandidate*> with;
       for (const std::size_t i : m) with.push_back(&candidates[i]);
       out.push_back(combine_effects(with));
+      out.back().reference = reference(m, now);
     }
     return out;
   }
 
+  /// One reference density per parameter of the joint model `members` (docs/method.md, "Reference
+  /// priors in the combined search"): a member of the explanation `now` from its joint posterior there
+  /// (effect_identification.hpp kReferenceShareJoint), any other from its single-effect posterior
+  /// (kReferenceShareSingle). Empty (the prior)
+  /// for a model of at most one parameter, evaluated by quadrature.
+  std::vector<ReferenceDensity> reference(const std::vector<std::size_t>& members, const Explanation& now) const {
+    std::vector<ReferenceDensity> out;
+    for (const std::size_t i : members) {
+      const auto at = std::find_if(now.steps.begin(), now.steps.end(),
+                                   [i](const ExplanationStep& s) { return s.candidate == i; });
+      const std::vector<ReferenceDensity> q =
+          at != now.steps.end()
+              ? reference_densities(candidates[i].priors,
+                                    now.member_parameters(static_cast<std::size_t>(at - now.steps.begin()), candidates),
+                                    kReferenceShareJoint)
+              : reference_densities(candidates[i].priors, singles[i].parameters, kReferenceShareSingle);
+      out.insert(out.end(), q.begin(), q.end());
+    }
+    const bool any = std::any_of(out.begin(), out.end(), [](const ReferenceDensity& q) { return !q.uniform(); });
+    if (out.size() < 2 || !any) out.clear();
+    return out;
+  }
+
   /// Jointly fitted models of candidate lists, on the seed streams from first_stream on.
-  std::vector<EffectResult> evaluate(const std::vector<std::vector<std::size_t>>& models, double log_z_floor,
-                                     std::uint64_t first_stream) const {
+  std::vector<EffectResult> evaluate(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
+                                     double log_z_floor, std::uint64_t first_stream) const {
     if (models.empty()) return {};
-    const std::vector<EffectCandidate> tried = combined(models);
+    const std::vector<EffectCandidate> tried = combined(models, now);
     std::vector<EffectResult> out =
         evaluate_candidates(tried, likelihood, settings, log_z_floor, first_stream, progress);
     for (std::size_t k = 0; k < out.size(); ++k) fill_gap(out[k], tried[k], f_hz, y_real, gap_before);
@@ -67,11 +94,11 @@ struct Search {
   /// Bayes factor and the shrink of the first k + 1 members against the first k. Prefixes of one member
   /// are the single effects; longer proper prefixes are evaluated on the streams from first_stream on.
   std::vector<ExplanationStep> restate(const std::vector<std::size_t>& members, const EffectResult& joint,
-                                       std::uint64_t first_stream) const {
+                                       const Explanation& now, std::uint64_t first_stream) const {
     std::vector<std::vector<std::size_t>> longer;
     for (std::size_t k = 2; k < members.size(); ++k)
       longer.emplace_back(members.begin(), members.begin() + static_cast<std::ptrdiff_t>(k));
-    const std::vector<EffectResult> evaluated = evaluate(longer, log_z_none, first_stream);
+    const std::vector<EffectResult> evaluated = evaluate(longer, now, log_z_none, first_stream);
     std::vector<const EffectResult*> prefix{&singles[members.front()]};
     for (const auto& r : evaluated) prefix.push_back(&r);
     prefix.push_back(&joint);
@@ -100,12 +127,12 @@ void swap_round(const Search& search, std::uint64_t round, Explanation& out) {
     }
   if (swapped.empty()) return;
   const std::uint64_t first_stream = round * kMaxExplanationEffects * n;
-  std::vector<EffectResult> results = search.evaluate(swapped, out.joint.log_z, first_stream);
+  std::vector<EffectResult> results = search.evaluate(swapped, out, out.joint.log_z, first_stream);
   out.rounds.push_back(results);
   const std::size_t best = best_of(results);
   if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
   results[best].candidate = swapped[best].back();
-  out.steps = search.restate(swapped[best], results[best], first_stream + (kMaxExplanationEffects - 1) * n);
+  out.steps = search.restate(swapped[best], results[best], out, first_stream + (kMaxExplanationEffects - 1) * n);
   out.joint = results[best];
 }
 
@@ -149,7 +176,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
       added.push_back(i);
     }
     if (models.empty()) break;
-    const std::vector<EffectCandidate> tried = search.combined(models);
+    const std::vector<EffectCandidate> tried = search.combined(models, out);
     std::vector<EffectResult> results =
         evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z, round * n, progress);
     out.rounds.push_back(results);
