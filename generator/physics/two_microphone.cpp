@@ -83,11 +83,18 @@ Eigen::ArrayXcd TwoMicrophoneChain::true_transfer(const Eigen::ArrayXcd& y_true,
   if (dev.temperature_offset_k == 0.0 && !dev.tube_losses && tube_air.c0 == air_.c0) {
     // transfer_function element by element as it evaluates it, with the nominal waves at a microphone
     // the deviation leaves in place.
+    // A moved microphone: k is real, so e^{−jxk} = conj e^{jxk}, one sincos per point (equal to exp()'s
+    // values to rounding).
     const Eigen::ArrayXcd r = reflection_from_admittance(y_tube), k = lossless_wavenumber(air_, f_);
     const auto pressure = [&](double x, bool nominal, const Eigen::ArrayXcd& out,
                               const Eigen::ArrayXcd& back) -> Eigen::ArrayXcd {
       if (nominal) return out + r * back;
-      return (kJ * x * k).exp() + r * (-kJ * x * k).exp();
+      Eigen::ArrayXcd p(k.size());
+      for (Eigen::Index i = 0; i < k.size(); ++i) {
+        const cd wave = std::polar(1.0, x * k[i].real());
+        p[i] = wave + r[i] * std::conj(wave);
+      }
+      return p;
     };
     const bool first = dev.reference_plane_m == 0.0, second = first && dev.spacing_error_m == 0.0;
     return pressure(x2, second, out2_, back2_) / pressure(x1, first, out1_, back1_);
