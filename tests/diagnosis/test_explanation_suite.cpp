@@ -39,6 +39,22 @@ void check_catalogue_cases(std::size_t first, std::size_t last) {
   CHECK(right >= 0.8 * total);
 }
 
+/// The two-effect case of `truth` + `second`, diagnosed; both must be named, the residual white and the
+/// combined shrink at least half the exact model's.
+diagnosis::Diagnosis check_both_named(const std::string& truth, const std::string& second) {
+  const auto cases = two_effect_cases();
+  const auto c = *std::find_if(cases.begin(), cases.end(), [&](const ValidationCase& x) {
+    return x.truth == truth && x.truth_second == second;
+  });
+  const auto d = run_case(c);
+  CAPTURE(d.verdict.effect);
+  CHECK(explains(d.verdict, c.truth));
+  CHECK(explains(d.verdict, c.truth_second));
+  CHECK(d.verdict.white_after);
+  CHECK(d.verdict.shrink >= 0.5 * exact_shrink(c, d));
+  return d;
+}
+
 }  // namespace
 
 TEST_SUITE("statistical") {
@@ -53,16 +69,7 @@ TEST_SUITE("statistical") {
   }
 
   TEST_CASE("explanation suite: two effects at once are both named, the combined shrink at least half the exact model's") {
-    const auto cases = two_effect_cases();
-    const auto c = *std::find_if(cases.begin(), cases.end(), [](const ValidationCase& x) {
-      return x.truth == "reference_plane" && x.truth_second == "tube_losses";
-    });
-    const auto d = run_case(c);
-    CAPTURE(d.verdict.effect);
-    CHECK(explains(d.verdict, c.truth));
-    CHECK(explains(d.verdict, c.truth_second));
-    CHECK(d.verdict.white_after);
-    CHECK(d.verdict.shrink >= 0.5 * exact_shrink(c, d));
+    const auto d = check_both_named("reference_plane", "tube_losses");
     CHECK(best_single_shrink(d) < 0.5 * d.verdict.shrink);  // neither effect alone comes close
   }
 
@@ -99,17 +106,7 @@ TEST_SUITE("statistical") {
   // resonance (q 8), leaving the truth screened out (edge_gap + air_gap, unexplained). Drawn half from
   // frame_resonance's single-effect posterior, it finds it. About 4 s of CPU.
   TEST_CASE("explanation suite: a narrow added effect is not lost by the screening of the combined search") {
-    const auto cases = two_effect_cases();
-    const auto c = *std::find_if(cases.begin(), cases.end(), [](const ValidationCase& x) {
-      return x.truth == "edge_gap" && x.truth_second == "frame_resonance";
-    });
-    const auto d = run_case(c);
-    CAPTURE(d.verdict.effect);
-    CHECK(explains(d.verdict, c.truth));
-    CHECK(explains(d.verdict, c.truth_second));
-    CHECK(d.verdict.explanation.size() == 2);
-    CHECK(d.verdict.white_after);
-    CHECK(d.verdict.shrink >= 0.5 * exact_shrink(c, d));
+    CHECK(check_both_named("edge_gap", "frame_resonance").verdict.explanation.size() == 2);
   }
 
   TEST_CASE("explanation suite: a gap outside the vocabulary is unexplained") {
