@@ -52,7 +52,7 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.sampler.missed_mode_retries = s.missed_mode_retries;
   if (s.sampler.slices > 0) r.sampler.slices = s.sampler.slices;
   r.sampler.residues = s.sampler_kind == SamplerKind::poles
-                           ? "integrated analytically (poles sampled, box correction; full sampler where the "
+                           ? "integrated analytically (poles sampled, box correction; box mass sampled where the "
                              "correction is not accurate to the tolerance)"
                            : "sampled";
   r.sampler.truncation_tolerance_nats = s.truncation_tolerance;
@@ -99,9 +99,9 @@ FitModel model_record(const ModelResult& m, const Measurement& data) {
   if (m.run.log_support_fraction != 0.0) r.log_passive_prior_fraction = m.run.log_support_fraction;
   const GoodnessOfFit g = goodness_of_fit(data, m);
   r.goodness_of_fit = FitGoodness{"max_likelihood", g.relative_rms, g.max_abs_delta_alpha};
-  r.sampler = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
+  r.sampler = m.sampler;  // "poles_analytic_residues" | "poles_box_mass_sampled" | "full" (selection/fit.hpp)
   if (!m.sampler_note.empty()) r.sampler_note = m.sampler_note;
-  if (m.sampler != "full")
+  if (m.sampler == "poles_analytic_residues")
     r.truncation = FitTruncation{m.truncation_correction, m.truncation_correction_error, m.reweighted_ess_ratio,
                                  m.gibbs_weight};
   return r;
