@@ -4,6 +4,7 @@
 #include "core/version.hpp"
 #include "inference/evidence.hpp"
 #include "selection/goodness_of_fit.hpp"
+#include "selection/prior_edge.hpp"
 
 #include <fmt/format.h>
 
@@ -140,6 +141,7 @@ FitRecord fit_record(const Measurement& data, const ReadOptions& read, const Fit
   std::vector<std::string> warnings = data.warnings;  // the reader's (e.g. plausibility demoted to warnings)
   warnings.insert(warnings.end(), fit.warnings.begin(), fit.warnings.end());
   if (const auto poor = poor_fit_warning(chosen.order.name(), goodness_of_fit(data, chosen))) warnings.push_back(*poor);
+  if (const auto edge = prior_edge_warning(chosen, settings.priors)) warnings.push_back(*edge);
   r.warnings = warnings;
   if (!fit.grid.steps.empty() || !fit.grid.edge.empty()) {
     FitGrid g{fit.grid.qmax, fit.grid.smax, fit.grid.steps, {}};
