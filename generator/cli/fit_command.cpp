@@ -125,8 +125,8 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                 "truncated to passive models");
   add_parsed_option(*sub, "--sampler", s.sampler_kind, parse_sampler_kind,
                     "full (default): sample every parameter; poles: sample the poles, integrate the residues "
-                    "analytically (falls back to full per order where the residue box cannot be corrected for; "
-                    "fit.json says which ran)")
+                    "analytically (an order whose residue box cannot be corrected for afterwards is re-run with the "
+                    "box mass sampled; fit.json says which ran)")
       ->check(CLI::IsMember({"poles", "full"}))->default_str(s.sampler_kind == SamplerKind::full ? "full" : "poles");
 }
 

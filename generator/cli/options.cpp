@@ -114,6 +114,7 @@ std::string flag_for(const std::string& key) {
       {"passive", "--passive"},
       {"phase", "--phase-unit"},
       {"points", "--points"},
+      {"priors", "--priors"},
       {"qmax", "--qmax"},
       {"quantity", "--quantity"},
       {"reduce_symmetry = false", "--no-symmetry-reduction"},

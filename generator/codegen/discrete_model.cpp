@@ -296,11 +296,23 @@ void assign_numerators(const Eigen::VectorXd& x, int taps, DiscreteModel& out) {
 }
 
 /// Constraint grid (Hz) for Re H ≥ margin: θ = 0 and π, 160 log-spaced from 1e-5 fs and 63 linear up to
-/// Nyquist (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss).
-std::vector<double> passive_grid_hz(double fs_hz) {
+/// Nyquist (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss),
+/// and 31 points across each pair's resonance, f_p + w tan φ with φ uniform in (−π/2, π/2), f_p = arg(z)/2π · fs
+/// and w = −ln|z|/2π · fs its half width (a narrow pair, α ≪ β, is otherwise stepped over).
+std::vector<double> passive_grid_hz(const DiscreteModel& m) {
+  const double fs_hz = m.fs_hz;
   std::vector<double> grid{0.0, 0.5 * fs_hz};
   for (int i = 0; i < 160; ++i) grid.push_back(1e-5 * fs_hz * std::pow(0.5 / 1e-5, i / 159.0));
   for (int i = 1; i < 64; ++i) grid.push_back(0.5 * fs_hz * i / 64.0);
+  constexpr int kResonancePoints = 32;
+  for (const PairTerm& p : m.pair) {
+    const cplx z(1.0 + p.e_r, p.p_i);
+    const double centre = std::abs(std::arg(z)) * fs_hz / (2.0 * kPi), half = -std::log(std::abs(z)) * fs_hz / (2.0 * kPi);
+    for (int i = 1; i < kResonancePoints; ++i) {
+      const double f = centre + half * std::tan(kPi * (double(i) / kResonancePoints - 0.5));
+      if (f > 0.0 && f < 0.5 * fs_hz) grid.push_back(f);
+    }
+  }
   return grid;
 }
 
@@ -335,7 +347,7 @@ void constrain_passive(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, doubl
     shifted.fir[0] -= delta;
     return options.passivity_violations(shifted);
   };
-  std::vector<double> where = passive_grid_hz(out.fs_hz), bad = violations_with_margin(out);
+  std::vector<double> where = passive_grid_hz(out), bad = violations_with_margin(out);
   out.passive_rounds = 0;
   for (int round = 1; !bad.empty() && round <= kMaxPassiveRounds; ++round) {
     where.insert(where.end(), bad.begin(), bad.end());

@@ -174,7 +174,13 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     }
     const Eigen::VectorXd &lo = marginal.box_lo(), &hi = marginal.box_hi();
     Eigen::VectorXd r;
-    if (-std::expm1(c.log_p_lo - c.log_p_up) <= 1e-9) {
+    // Points whose posterior share is below kNegligibleShare/n (together at most kNegligibleShare of the
+    // posterior: early dead points, where the box mass is tiny and draws would need the Gibbs chain) keep
+    // r̂ clamped to the box instead of a draw; no summary can see them.
+    const bool negligible = weight[ii] < kNegligibleShare / static_cast<double>(poles.size());
+    if (negligible && -std::expm1(c.log_p_lo - c.log_p_up) <= 1e-9) {
+      r = c.mean.cwiseMax(lo).cwiseMin(hi);
+    } else if (-std::expm1(c.log_p_lo - c.log_p_up) <= 1e-9) {
       ResidueDrawMethod method;
       r = draw_residues(c, lo, hi, rng, method);
       if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];
@@ -196,7 +202,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
       // Var(ρ_i) = Var(P̂)/P̃² (in logs: P̃ may underflow where the t lies far outside the box).
       if (sample_variance > 0.0)
         correction_variance += std::exp(2.0 * (std::log(weight[ii]) - c.log_p_sampled) + std::log(sample_variance / md));
-      if (p_hat > 0.0) {
+      if (p_hat > 0.0 && !negligible) {
         ResidueDrawMethod method;
         r = draw_residues(c, lo, hi, rng, method);
         if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];

@@ -62,6 +62,9 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
 /// weight p_i, at least kMinBoxDraws and at most kMaxBoxDraws per point. The reported correction error
 /// (from the replicates' sample variances) says what was reached.
 constexpr double kBoxDrawBudget = 2e5;
+/// Points of a run whose posterior share is below this over the number of points keep their least-squares
+/// residues (clamped to the box) instead of a draw from the conditional (together at most this share).
+constexpr double kNegligibleShare = 1e-6;
 constexpr double kBoxDrawsPerPoint = 20.0;
 constexpr long kMinBoxDraws = 2;  ///< the sample variance needs two
 constexpr long kMaxBoxDraws = 20000;

@@ -47,14 +47,15 @@ struct FitSettings {
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;
-  /// full by default: the pole sampler still falls back to the full sampler on some over-complete orders,
-  /// and a fallback's evidence can then win the selection (docs/method.md, "Status of the pole sampler").
+  /// full by default: with the pole sampler (which finds modes the full sampler misses) one bundled file's
+  /// selected order still cannot be emitted in every format (docs/method.md, "Status of the pole sampler");
+  /// `passive` needs the residues sampled in any case.
   SamplerKind sampler_kind = SamplerKind::full;
   /// The pole sampler's box correction (inference/poles_sampler.hpp) is accepted when its Monte Carlo
   /// error is at most this (nats; a fraction of the sampling error √(H/n) ≈ 0.2-0.6 of the default
   /// runs) and the reweighting keeps at least a quarter of the effective sample size (the sampling error
   /// is then divided by √(ratio), inference/poles_sampler.hpp); otherwise the order is
-  /// re-run with the full sampler.
+  /// re-run with the box mass sampled as coordinates (BoxMassMethod::sampled: exact, no correction).
   double truncation_tolerance = 0.05;
   /// How many real poles and how many pairs the grid may gain beyond qmax/smax when the selected order lies
   /// on its edge (selection/grid_growth.hpp; 0 keeps the grid as given).
@@ -69,7 +70,7 @@ struct ModelResult {
   std::vector<ParameterSummary> parameters;  ///< folded to the reduced form
   /// Poles of the best sample, residues refitted under Re G ≥ 0 (set by run_fit; what emit uses by default).
   passivity::PassiveEstimate passive{};
-  /// "poles_analytic_residues" or "full" (fit.json per model "sampler").
+  /// "poles_analytic_residues", "poles_box_mass_sampled" or "full" (fit.json per model "sampler").
   std::string sampler = "full";
   /// Why the full sampler ran when the pole sampler was asked for (empty otherwise).
   std::string sampler_note{};

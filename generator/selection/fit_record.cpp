@@ -4,6 +4,7 @@
 #include "core/version.hpp"
 #include "inference/evidence.hpp"
 #include "selection/goodness_of_fit.hpp"
+#include "selection/prior_edge.hpp"
 
 #include <fmt/format.h>
 
@@ -52,7 +53,7 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.sampler.missed_mode_retries = s.missed_mode_retries;
   if (s.sampler.slices > 0) r.sampler.slices = s.sampler.slices;
   r.sampler.residues = s.sampler_kind == SamplerKind::poles
-                           ? "integrated analytically (poles sampled, box correction; full sampler where the "
+                           ? "integrated analytically (poles sampled, box correction; box mass sampled where the "
                              "correction is not accurate to the tolerance)"
                            : "sampled";
   r.sampler.truncation_tolerance_nats = s.truncation_tolerance;
@@ -99,9 +100,9 @@ FitModel model_record(const ModelResult& m, const Measurement& data) {
   if (m.run.log_support_fraction != 0.0) r.log_passive_prior_fraction = m.run.log_support_fraction;
   const GoodnessOfFit g = goodness_of_fit(data, m);
   r.goodness_of_fit = FitGoodness{"max_likelihood", g.relative_rms, g.max_abs_delta_alpha};
-  r.sampler = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
+  r.sampler = m.sampler;  // "poles_analytic_residues" | "poles_box_mass_sampled" | "full" (selection/fit.hpp)
   if (!m.sampler_note.empty()) r.sampler_note = m.sampler_note;
-  if (m.sampler != "full")
+  if (m.sampler == "poles_analytic_residues")
     r.truncation = FitTruncation{m.truncation_correction, m.truncation_correction_error, m.reweighted_ess_ratio,
                                  m.gibbs_weight};
   return r;
@@ -140,6 +141,7 @@ FitRecord fit_record(const Measurement& data, const ReadOptions& read, const Fit
   std::vector<std::string> warnings = data.warnings;  // the reader's (e.g. plausibility demoted to warnings)
   warnings.insert(warnings.end(), fit.warnings.begin(), fit.warnings.end());
   if (const auto poor = poor_fit_warning(chosen.order.name(), goodness_of_fit(data, chosen))) warnings.push_back(*poor);
+  if (const auto edge = prior_edge_warning(chosen, settings.priors)) warnings.push_back(*edge);
   r.warnings = warnings;
   if (!fit.grid.steps.empty() || !fit.grid.edge.empty()) {
     FitGrid g{fit.grid.qmax, fit.grid.smax, fit.grid.steps, {}};
