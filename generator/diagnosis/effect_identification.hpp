@@ -154,8 +154,9 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
 /// runs them, on the same seed streams, and their results replace the screened ones (method
 /// "nested_sampling"; the others keep method "screened"). A candidate left screened is more than 20 dB
 /// (5 standard errors of the screening) below the best and below decisive, so it could neither be
-/// picked nor make the pick decisive. With fewer candidates than two, or screen_live ≥ live, every
-/// candidate runs in full.
+/// picked nor make the pick decisive. A contender's full run samples from reference densities built on
+/// its screening run's posterior (reference_densities, kReferenceShareJoint). With fewer candidates than
+/// two, or screen_live ≥ live, every candidate runs in full.
 std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>& candidates,
                                               const EffectLikelihood& likelihood, const IdentificationSettings& settings,
                                               double log_z_reference, std::uint64_t first_stream, Progress& progress);

@@ -17,7 +17,10 @@
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
 /// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
-/// only fits noise is not decisive. Round r samples on the seed streams r·n + i (n candidates), after
+/// only fits noise is not decisive. Every joint candidate samples from reference densities on its prior
+/// built on earlier posteriors (its members' in the explanation, the added member's single-effect one),
+/// the likelihood divided by them: the same evidence in fewer calls (docs/method.md, "Reference priors in
+/// the combined search"). Round r samples on the seed streams r·n + i (n candidates), after
 /// the single effects' 0 … n − 1, the swaps after round r on kMax·n·r + i and the steps restated after a
 /// swap on kMax·n·r + (kMax − 1)·n + i, so the search is deterministic whatever the thread count.
 #pragma once
