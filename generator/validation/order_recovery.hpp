@@ -52,7 +52,7 @@ struct RecoveryCase {
   Order nearest{0, 0};       ///< the one-term-smaller order that attains D
   bool identifiable = false;
   int extra_terms = 0;       ///< (Q + S) selected − (Q + S) true
-  int fallbacks = 0;         ///< orders the pole sampler handed to the full sampler
+  int fallbacks = 0;         ///< orders the pole sampler re-ran with the box mass sampled (selection/fit.hpp)
 };
 
 /// Every (truth, noise, replicate) data set fitted with every sampler; data set i uses the same simulation
