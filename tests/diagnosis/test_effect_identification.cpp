@@ -70,13 +70,23 @@ TEST_CASE("diagnose: diagnosis.json is byte-identical with 1 and 2 threads") {
   CHECK(one == two);
 }
 
-TEST_CASE("diagnose: a combined search gives a byte-identical diagnosis.json with 1 and 2 threads") {
-  // Two effects: the second round samples several joint candidates on their own seed streams.
+namespace {
+
+/// A reference-plane shift with tube losses (29 mm tube, x1 = 0.3 m), 40 live points: two effects, so the
+/// combined search runs a second round over joint candidates.
+diagnosis::DiagnosisRequest two_effect_request() {
   auto c = clear_case("reference_plane", "reference_plane:delta_m=3mm", 11);
   c.second = "tube_losses";
   c.tube_diameter_m = 0.029;
   c.mic_distance_m = 0.3;
-  auto request = case_request(c, 40);
+  return case_request(c, 40);
+}
+
+}  // namespace
+
+TEST_CASE("diagnose: a combined search gives a byte-identical diagnosis.json with 1 and 2 threads") {
+  // Two effects: the second round samples several joint candidates on their own seed streams.
+  auto request = two_effect_request();
   request.settings.threads = 1;
   const auto d = diagnosis::run_diagnosis(request);
   REQUIRE(d.verdict.explanation.size() >= 2);
@@ -89,11 +99,7 @@ TEST_CASE("diagnose: screening the combined search's joint candidates picks what
   // Two effects (the case above): the second round screens every remaining effect jointly with the first
   // and runs in full only those within 20 dB of the best or of decisive. Reference: the same search with
   // every joint candidate run in full (screen_live = live). Screening at 15 live points (a third of 40).
-  auto c = clear_case("reference_plane", "reference_plane:delta_m=3mm", 11);
-  c.second = "tube_losses";
-  c.tube_diameter_m = 0.029;
-  c.mic_distance_m = 0.3;
-  auto request = case_request(c, 40);
+  auto request = two_effect_request();
   request.settings.screen_live = 15;
   const auto screened = diagnosis::run_diagnosis(request);
   request.settings.screen_live = request.settings.sampler.live;
