@@ -68,54 +68,83 @@ struct BoxCoordinates {
                  [this](double* u) { transform.fold(u); }};
   }
 
+  /// ln of the replicate that the box coordinates of θ_ext make for the conditional c of its poles (and the
+  /// deviation r − r̂ it draws, when asked).
+  double log_replicate(const double* theta, const ResidueConditional& c, Eigen::VectorXd* deviation) const {
+    BoxMassSimulator simulator(c, marginal.box_lo(), marginal.box_hi());
+    return simulator.log_replicate(chi_square_quantile(c.nu, theta[dim]), theta + dim + 1, deviation);
+  }
+
   double log_likelihood(const double* theta) const {
     const ResidueConditional& c = marginal.untruncated(theta);
     if (!c.valid) return -std::numeric_limits<double>::infinity();
-    BoxMassSimulator simulator(c, marginal.box_lo(), marginal.box_hi());
-    return c.log_marginal + simulator.log_replicate(chi_square_quantile(c.nu, theta[dim]), theta + dim + 1, nullptr);
+    return c.log_marginal + log_replicate(theta, c, nullptr);
   }
 
-  /// The residues a point of the run stands for (clamped to the box against rounding).
-  Eigen::VectorXd residues(const double* theta) const {
-    const ResidueConditional& c = marginal.untruncated(theta);
-    BoxMassSimulator simulator(c, marginal.box_lo(), marginal.box_hi());
+  /// The residues a point of the run stands for, c the conditional of its poles (clamped to the box
+  /// against rounding).
+  Eigen::VectorXd residues(const double* theta, const ResidueConditional& c) const {
     Eigen::VectorXd deviation;
-    simulator.log_replicate(chi_square_quantile(c.nu, theta[dim]), theta + dim + 1, &deviation);
+    log_replicate(theta, c, &deviation);
     return (c.mean + deviation).cwiseMax(marginal.box_lo()).cwiseMin(marginal.box_hi());
   }
+};
+
+/// The full-θ run made from a pole run: the same points and weights, each row θ = (ψ, r) with its ln L,
+/// and one extra point of zero weight at the end, the poles of the highest profile likelihood with their
+/// least-squares residues r̂ where r̂ is admissible (PolesRun::run).
+class FullThetaRun {
+ public:
+  FullThetaRun(const Measurement& data, const Order& order, DataCount count, const NestedRun& poles, NestedRun& run)
+      : order_(order), likelihood_(data, order, count), run_(run) {
+    run_ = poles;
+    run_.dim = order.dim();
+    run_.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
+  }
+
+  /// Point i: θ = (ψ, r); (ψ, r̂) is offered as the run's best θ (c the conditional of ψ).
+  void set(std::size_t i, const double* psi, const Eigen::VectorXd& r, const ResidueConditional& c,
+           const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+    double* theta = run_.samples.data() + i * static_cast<std::size_t>(order_.dim());
+    assemble_theta(order_, psi, r, theta);
+    run_.log_likelihood[i] = likelihood_(theta);
+    const double profile = -std::log(c.s_min);
+    if (profile > best_profile_ && in_residue_box(c.mean, lo, hi)) {
+      best_profile_ = profile;
+      best_theta_.assign(static_cast<std::size_t>(order_.dim()), 0.0);
+      assemble_theta(order_, psi, c.mean, best_theta_.data());
+    }
+  }
+
+  /// Appends the best θ and sets max_log_likelihood.
+  void finish() {
+    if (!best_theta_.empty()) {
+      run_.samples.insert(run_.samples.end(), best_theta_.begin(), best_theta_.end());
+      run_.log_likelihood.push_back(likelihood_(best_theta_.data()));
+      run_.log_weight.push_back(-std::numeric_limits<double>::infinity());
+    }
+    run_.max_log_likelihood = *std::max_element(run_.log_likelihood.begin(), run_.log_likelihood.end());
+  }
+
+ private:
+  const Order& order_;
+  const Likelihood likelihood_;
+  NestedRun& run_;
+  double best_profile_ = -std::numeric_limits<double>::infinity();
+  std::vector<double> best_theta_;
 };
 
 /// The complete posterior of a run with the box mass sampled: every point's residues come from its own
 /// coordinates and its weight is already exact (no correction).
 void complete_box_sampled(const Measurement& data, const Order& order, DataCount count, const BoxCoordinates& box,
                           const NestedRun& poles, PolesRun& out) {
-  NestedRun& run = out.run;
-  run = poles;
-  run.dim = order.dim();
-  run.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
-  const Likelihood likelihood(data, order, count);
-  double best_profile = -std::numeric_limits<double>::infinity();
-  std::vector<double> best_theta;
+  FullThetaRun full(data, order, count, poles, out.run);
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const double* point = poles.point(i);
-    double* theta = run.samples.data() + i * static_cast<std::size_t>(order.dim());
-    const Eigen::VectorXd r = box.residues(point);
-    assemble_theta(order, point, r, theta);
-    run.log_likelihood[i] = likelihood(theta);
     const ResidueConditional& c = box.marginal.untruncated(point);
-    const double profile = -std::log(c.s_min);
-    if (profile > best_profile && in_residue_box(c.mean, box.marginal.box_lo(), box.marginal.box_hi())) {
-      best_profile = profile;
-      best_theta.assign(static_cast<std::size_t>(order.dim()), 0.0);
-      assemble_theta(order, point, c.mean, best_theta.data());
-    }
+    full.set(i, point, box.residues(point, c), c, box.marginal.box_lo(), box.marginal.box_hi());
   }
-  if (!best_theta.empty()) {
-    run.samples.insert(run.samples.end(), best_theta.begin(), best_theta.end());
-    run.log_likelihood.push_back(likelihood(best_theta.data()));
-    run.log_weight.push_back(-std::numeric_limits<double>::infinity());
-  }
-  run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
+  full.finish();
 }
 
 }  // namespace
@@ -139,14 +168,9 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
 
   PolesRun out;
   NestedRun& run = out.run;
-  run = poles;
-  run.dim = order.dim();
-  run.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
-  const Likelihood likelihood(data, order, count);
+  FullThetaRun full(data, order, count, poles, run);
   const Eigen::ArrayXd weight = posterior_weights(poles);
   Rng rng(draw_seed);
-  double best_profile = -std::numeric_limits<double>::infinity();
-  std::vector<double> best_theta;
   Eigen::ArrayXd rho = Eigen::ArrayXd::Ones(weight.size());
   double correction_variance = 0.0;  // Σ p_i² Var(ρ_i)
   // First pass: which points need the box estimate, and their share of the draw budget. With GHK the
@@ -167,7 +191,6 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     const Eigen::Index ii = static_cast<Eigen::Index>(i);
     const double* psi = dim == 0 ? nullptr : poles.point(i);
     const ResidueConditional& c = marginal.conditional(psi);
-    double* theta = run.samples.data() + i * static_cast<std::size_t>(order.dim());
     if (!c.valid) {  // a numerically singular M (ln L = −∞): never a live or weighted point
       rho[ii] = 0.0;
       continue;
@@ -178,9 +201,10 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     // posterior: early dead points, where the box mass is tiny and draws would need the Gibbs chain) keep
     // r̂ clamped to the box instead of a draw; no summary can see them.
     const bool negligible = weight[ii] < kNegligibleShare / static_cast<double>(poles.size());
-    if (negligible && -std::expm1(c.log_p_lo - c.log_p_up) <= 1e-9) {
+    const bool box_mass_known = -std::expm1(c.log_p_lo - c.log_p_up) <= 1e-9;
+    if (negligible && box_mass_known) {
       r = c.mean.cwiseMax(lo).cwiseMin(hi);
-    } else if (-std::expm1(c.log_p_lo - c.log_p_up) <= 1e-9) {
+    } else if (box_mass_known) {
       ResidueDrawMethod method;
       r = draw_residues(c, lo, hi, rng, method);
       if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];
@@ -210,15 +234,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
         r = c.mean.cwiseMax(lo).cwiseMin(hi);  // weight 0: any admissible θ will do
       }
     }
-    assemble_theta(order, psi, r, theta);
-    run.log_likelihood[i] = likelihood(theta);
-    // Profile likelihood (r = r̂) where r̂ is admissible: the best of these is the run's best θ.
-    const double profile = -std::log(c.s_min);
-    if (profile > best_profile && in_residue_box(c.mean, lo, hi)) {
-      best_profile = profile;
-      best_theta.assign(static_cast<std::size_t>(order.dim()), 0.0);
-      assemble_theta(order, psi, c.mean, best_theta.data());
-    }
+    full.set(i, psi, r, c, lo, hi);
   }
   const double mean_rho = (weight * rho).sum();
   out.truncation_correction = std::log(mean_rho);
@@ -234,12 +250,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   } else {
     out.reweighted_ess_ratio = 0.0;
   }
-  if (!best_theta.empty()) {
-    run.samples.insert(run.samples.end(), best_theta.begin(), best_theta.end());
-    run.log_likelihood.push_back(likelihood(best_theta.data()));
-    run.log_weight.push_back(-std::numeric_limits<double>::infinity());
-  }
-  run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
+  full.finish();
   return out;
 }
 
