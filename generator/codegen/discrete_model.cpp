@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "model/multipole.hpp"
+#include "model/passivity.hpp"
 #include "numerics/least_squares_inequality.hpp"
 
 #include <Eigen/QR>
@@ -297,21 +298,18 @@ void assign_numerators(const Eigen::VectorXd& x, int taps, DiscreteModel& out) {
 
 /// Constraint grid (Hz) for Re H ≥ margin: θ = 0 and π, 160 log-spaced from 1e-5 fs and 63 linear up to
 /// Nyquist (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss),
-/// and 31 points across each pair's resonance, f_p + w tan φ with φ uniform in (−π/2, π/2), f_p = arg(z)/2π · fs
-/// and w = −ln|z|/2π · fs its half width (a narrow pair, α ≪ β, is otherwise stepped over).
+/// and the points across each pair's resonance (model/passivity.hpp, resonance_points) at f_p = arg(z)/2π · fs
+/// with half width −ln|z|/2π · fs (a narrow pair, α ≪ β, is otherwise stepped over).
 std::vector<double> passive_grid_hz(const DiscreteModel& m) {
   const double fs_hz = m.fs_hz;
   std::vector<double> grid{0.0, 0.5 * fs_hz};
   for (int i = 0; i < 160; ++i) grid.push_back(1e-5 * fs_hz * std::pow(0.5 / 1e-5, i / 159.0));
   for (int i = 1; i < 64; ++i) grid.push_back(0.5 * fs_hz * i / 64.0);
-  constexpr int kResonancePoints = 32;
   for (const PairTerm& p : m.pair) {
     const cplx z(1.0 + p.e_r, p.p_i);
     const double centre = std::abs(std::arg(z)) * fs_hz / (2.0 * kPi), half = -std::log(std::abs(z)) * fs_hz / (2.0 * kPi);
-    for (int i = 1; i < kResonancePoints; ++i) {
-      const double f = centre + half * std::tan(kPi * (double(i) / kResonancePoints - 0.5));
+    for (const double f : resonance_points(centre, half))
       if (f > 0.0 && f < 0.5 * fs_hz) grid.push_back(f);
-    }
   }
   return grid;
 }

@@ -307,4 +307,11 @@ bool is_passive(const Order& order, const double* theta) {
   return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), std::sqrt(lo * hi)).passive;
 }
 
+std::vector<double> resonance_points(double centre, double half) {
+  constexpr int kPoints = 32;  // 31 interior nodes of φ
+  std::vector<double> out;
+  for (int i = 1; i < kPoints; ++i) out.push_back(centre + half * std::tan(kPi * (double(i) / kPoints - 0.5)));
+  return out;
+}
+
 }  // namespace admitgen

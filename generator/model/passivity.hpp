@@ -65,4 +65,10 @@ PassivityResult continuous_passivity(const Order& order, const double* theta);
 /// test decides the rest. False for a non-causal model (λ or α ≤ 0).
 bool is_passive(const Order& order, const double* theta);
 
+/// Constraint points across one resonance of half width `half` at `centre` (any unit): centre + half·tan φ,
+/// φ uniform in (−π/2, π/2), 31 points. They resolve the Lorentzian Re G of a narrow pair (α ≪ β) that a
+/// log or linear grid steps over (the passive refits of passivity/passive_residues.hpp and of
+/// codegen/discrete_model.hpp seed their constraint grids with them). Callers drop points outside their range.
+std::vector<double> resonance_points(double centre, double half);
+
 }  // namespace admitgen

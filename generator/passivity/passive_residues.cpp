@@ -2,6 +2,7 @@
 #include "passivity/passive_residues.hpp"
 
 #include "core/errors.hpp"
+#include "model/passivity.hpp"
 #include "model/residue_basis.hpp"
 #include "numerics/least_squares_inequality.hpp"
 
@@ -22,8 +23,6 @@ constexpr double kMarginFraction = 1e-9;
 /// fastest (Re G of a pole term varies on the scale of its own rate; 16 per decade resolves it).
 constexpr int kPointsPerDecade = 16;
 constexpr int kMaxRounds = 30;
-/// Points across each pair's resonance in the initial grid (initial_constraints).
-constexpr int kResonancePoints = 32;
 
 /// Weighted least-squares system [w Re Φ; w Im Φ] r ≈ [w Re t; w Im t].
 void weighted_system(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t, Eigen::MatrixXd& e,
@@ -47,13 +46,9 @@ std::vector<double> initial_constraints(const Order& order, const Eigen::VectorX
   for (int s = 0; s < order.s(); ++s) {
     const double m = std::hypot(theta[order.alpha(s)], theta[order.beta(s)]);
     lo = std::min(lo, std::min(m, theta[order.alpha(s)])), hi = std::max(hi, m);
-    // The pair's resonance on its own scale: β + α tan φ, φ uniform in (−π/2, π/2), resolves the
-    // Lorentzian Re G of a narrow pair (α ≪ β) that the log grid steps over.
-    const double al = theta[order.alpha(s)], be = std::abs(theta[order.beta(s)]);
-    for (int i = 1; i < kResonancePoints; ++i) {
-      const double x = be + al * std::tan(kPi * (double(i) / kResonancePoints - 0.5));
+    // The pair's resonance on its own scale (model/passivity.hpp, resonance_points).
+    for (const double x : resonance_points(std::abs(theta[order.beta(s)]), theta[order.alpha(s)]))
       if (x > 0.0) w.push_back(x);
-    }
   }
   if (t.omega.size() > 0) lo = std::min(lo, t.omega.minCoeff()), hi = std::max(hi, t.omega.maxCoeff());
   if (hi > 0.0) {
