@@ -209,19 +209,12 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
       r = draw_residues(c, lo, hi, rng, method);
       if (method == ResidueDrawMethod::gibbs) out.gibbs_weight += weight[ii];
     } else {
-      // P̂: the mean of m GHK replicates (unbiased, each in [0, 1]; inference/residue_draws.hpp), m_i from
+      // P̂: the mean of m GHK replicates (unbiased; inference/residue_draws.hpp), m_i from
       // the budget shares above; its variance from the replicates' sample variance.
       const double wanted = share_sum > 0.0 ? budget * share[i] / share_sum : 1.0;
       const long m = std::clamp(static_cast<long>(std::ceil(std::min(wanted, 1e12))), kMinBoxDraws, kMaxBoxDraws);
-      BoxMassSimulator simulator(c, lo, hi);
-      double sum = 0.0, sum2 = 0.0;
-      for (long d = 0; d < m; ++d) {
-        const double x = simulator.draw(rng);
-        sum += x;
-        sum2 += x * x;
-      }
-      const double md = static_cast<double>(m), p_hat = sum / md;
-      const double sample_variance = std::max(sum2 - sum * p_hat, 0.0) / (md - 1.0);
+      const BoxMassEstimate estimate = estimate_box_mass(c, lo, hi, m, rng);
+      const double md = static_cast<double>(m), p_hat = estimate.mean, sample_variance = estimate.sample_variance;
       rho[ii] = p_hat > 0.0 ? std::exp(std::log(p_hat) - c.log_p_sampled) : 0.0;
       // Var(ρ_i) = Var(P̂)/P̃² (in logs: P̃ may underflow where the t lies far outside the box).
       if (sample_variance > 0.0)

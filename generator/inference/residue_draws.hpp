@@ -30,7 +30,10 @@ Eigen::VectorXd untruncated_residue_draw(const ResidueConditional& c, Rng& rng);
 /// coordinate i depends on u_0..u_i only, so one replicate is Π_i P(l_i ≤ u_i ≤ h_i) with u_i drawn from
 /// N(0, 1) truncated to [l_i, h_i] (exact inversion) before the next factor. Each replicate lies in
 /// [0, 1] and has expectation P_box exactly (docs/method.md, "Truncation by the residue box"); unlike the
-/// hit rate of untruncated draws its relative variance stays bounded where P_box is tiny.
+/// hit rate of untruncated draws its relative variance stays bounded where P_box is tiny. Where r̂ lies
+/// outside the box the u_i are drawn around the mode of the truncated normal instead of 0, each factor
+/// times its likelihood ratio (docs/method.md, "Tilting the box-mass replicate"): same expectation, lower
+/// variance; then a replicate may exceed 1.
 class BoxMassSimulator {
  public:
   BoxMassSimulator(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
@@ -48,7 +51,16 @@ class BoxMassSimulator {
   Eigen::MatrixXd chol_;        ///< lower Cholesky factor of M̃⁻¹ in order_
   Eigen::VectorXd a_, b_, u_;   ///< bounds of y − ŷ per coordinate (order_), the drawn normals
   Eigen::VectorXd uniforms_;    ///< draw()'s uniforms
+  Eigen::VectorXd tilt_;        ///< v*: the mean shift of the u_i is v*·√(W/S_min) (zero when r̂ is in the box)
 };
+
+/// The mean of m ≥ 2 replicates of BoxMassSimulator (an unbiased P̂) and their sample variance.
+struct BoxMassEstimate {
+  double mean = 0.0;
+  double sample_variance = 0.0;
+};
+BoxMassEstimate estimate_box_mass(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi,
+                                  long m, Rng& rng);
 
 /// The χ²_ν quantile at u ∈ [0, 1) (Boost.Math's inverse regularised incomplete gamma): W for
 /// BoxMassSimulator::log_replicate from a uniform coordinate.

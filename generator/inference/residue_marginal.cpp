@@ -206,8 +206,13 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   //    coordinates y = D⁻¹r (inference/box_least_squares.hpp). Its slab starts at the supporting half-space
   //    of the box at y*, c_h = min over the box of dᵀ(y − ŷ) = (y* − ŷ)ᵀd = S(r*) − S_min at the true minimiser:
   //    this accounts for every violated face at once, P ≤ P(T ≥ √(ν(S(r*) − S_min)/S_min)). The others are the
-  //    eigenvectors of ΠBΠ, Π the projector orthogonal to Bu₁ (so B-orthogonal to u₁ and to each other).
+  //    eigenvectors of ΠBΠ, Π the projector orthogonal to Bu₁.
   //    Any y* in the box gives valid bounds; only their tightness needs the exact minimiser.
+  // The directions are built whitened, as z = X u with X = L̃⁻¹ D W⁻¹ (B = XᵀX, so uᵢᵀB uⱼ = zᵢᵀzⱼ): the z are
+  // made orthonormal by Gram-Schmidt, which makes the u B-orthogonal to rounding whatever the spread of B's
+  // eigenvalues. (Eigenvectors of B taken as they are are B-orthogonal only to ‖B‖ε; where B also has
+  // eigenvalues near ‖B‖ε, well-determined residue combinations, the slabs are then correlated and their
+  // product can fall below P_box.) Back in r: vⱼ = W⁻¹uⱼ = D⁻¹L̃zⱼ, of t scale √(S_min/ν) since ‖zⱼ‖ = 1.
   int cut = 0;  // directions whose slab holds less than 1 − 1e-12 of the t
   double log_product = 0.0;
   // When no coordinate marginal reaches a face (every tail beyond the negligible quantile is exactly 0),
@@ -215,46 +220,51 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   int slabs = 0;
   if (sum_outside > 0.0) {
     const Eigen::ArrayXd& width = width_;
-    box_cov_.noalias() = inv_chol_ * (c.scale.array() / width).matrix().asDiagonal();  // L̃⁻¹ D W⁻¹
-    const Eigen::MatrixXd b_cov = box_cov_.transpose() * box_cov_;                   // B (without S_min/ν)
-    directions_.resize(p_, p_);
-    m_scaled_ = scaled_;  // M̃
+    box_cov_.noalias() = inv_chol_ * (c.scale.array() / width).matrix().asDiagonal();  // X = L̃⁻¹ D W⁻¹
+    const Eigen::MatrixXd x_xt = box_cov_ * box_cov_.transpose();                      // XXᵀ: B in z
+    directions_.resize(p_, p_);  // the orthonormal z, then the v in r
+    m_scaled_ = scaled_;         // M̃
     box_a_ = lo_.cwiseQuotient(c.scale);
     box_b_ = hi_.cwiseQuotient(c.scale);
     const Eigen::VectorXd y_star = box_least_squares(m_scaled_, mean_scaled_, box_a_, box_b_);
     const Eigen::VectorXd d = m_scaled_ * (y_star - mean_scaled_);
     int first = 0;
+    Eigen::Index dropped = -1;  // the candidate along z₁, which z₁ replaces
     if (d.squaredNorm() > 0.0 && (y_star - mean_scaled_).dot(d) > 0.0) {
-      directions_.col(0) = (width.matrix().cwiseProduct(d).cwiseQuotient(c.scale));
+      // z₁ = X u₁ = L̃⁻¹ d = L̃ᵀ(y* − ŷ)
+      directions_.col(0) = (c.chol.transpose().triangularView<Eigen::Upper>() * (y_star - mean_scaled_)).normalized();
       first = 1;
-    }
-    if (first == 1 && p_ > 1) {
-      const Eigen::VectorXd w = (b_cov * directions_.col(0)).normalized();
+      const Eigen::VectorXd w = directions_.col(0);
       const Eigen::MatrixXd proj = Eigen::MatrixXd::Identity(p_, p_) - w * w.transpose();
-      eigen_.compute(proj * b_cov * proj);
-      Eigen::Index null_index = 0;  // the eigenvector along w (eigenvalue 0)
-      (eigen_.eigenvectors().transpose() * w).cwiseAbs().maxCoeff(&null_index);
-      for (Eigen::Index j = 0, k = 1; j < p_; ++j)
-        if (j != null_index) directions_.col(k++) = eigen_.eigenvectors().col(j);
-    } else if (first == 0 && p_ > 1) {
-      eigen_.compute(b_cov);
-      directions_ = eigen_.eigenvectors();
+      eigen_.compute(proj * x_xt * proj);
+      (eigen_.eigenvectors().transpose() * w).cwiseAbs().maxCoeff(&dropped);
+    } else if (p_ > 1) {
+      eigen_.compute(x_xt);
     }
-    slabs = (first == 1 || p_ > 1) ? static_cast<int>(p_) : 0;
+    if (first == 1 || p_ > 1) {
+      slabs = static_cast<int>(p_);
+      for (Eigen::Index j = 0, k = first; j < p_ && k < p_; ++j) {
+        if (j == dropped) continue;
+        Eigen::VectorXd z = eigen_.eigenvectors().col(j);
+        for (int pass = 0; pass < 2; ++pass)  // Gram-Schmidt twice: orthogonal to working precision
+          for (Eigen::Index i = 0; i < k; ++i) z -= directions_.col(i).dot(z) * directions_.col(i);
+        directions_.col(k++) = z.normalized();
+      }
+      for (Eigen::Index j = 0; j < slabs; ++j)
+        directions_.col(j) = (llt * directions_.col(j)).cwiseQuotient(c.scale);  // v = D⁻¹L̃z
+    }
+    const double s = std::sqrt(c.s_min / c.nu);
     for (Eigen::Index j = 0; j < slabs; ++j) {
-      const Eigen::VectorXd u = directions_.col(j);
-      const double var = u.dot(b_cov * u) * c.s_min / c.nu;
+      const auto v = directions_.col(j);
       slab_lo_[j] = -std::numeric_limits<double>::infinity();
       slab_hi_[j] = std::numeric_limits<double>::infinity();
-      if (!(var > 0.0) || !std::isfinite(var)) continue;
-      v_ = u.cwiseQuotient(width.matrix());
-      const Eigen::VectorXd& v = v_;
+      if (!v.allFinite()) continue;
       double lo_v = 0.0, hi_v = 0.0;
       for (Eigen::Index k = 0; k < p_; ++k) {
         lo_v += std::min(v[k] * lo_[k], v[k] * hi_[k]);
         hi_v += std::max(v[k] * lo_[k], v[k] * hi_[k]);
       }
-      const double s = std::sqrt(var), centre = v.dot(c.mean);
+      const double centre = v.dot(c.mean);
       slab_lo_[j] = (lo_v - centre) / s;
       slab_hi_[j] = (hi_v - centre) / s;
       double inside, outside, log_inside;

@@ -99,7 +99,7 @@ class ResidueMarginal {
   double mixture_log_norm_ = 0.0;             ///< ln[(ν/2)^{ν/2}/Γ(ν/2)]
   mutable std::vector<double> mixture_terms_;  ///< ln of the quadrature terms over ln(W/ν)
   mutable int slab_count_ = 0;                 ///< slabs in slab_lo_/slab_hi_
-  mutable Eigen::MatrixXd directions_;         ///< slab directions in box units (columns)
+  mutable Eigen::MatrixXd directions_;         ///< slab directions v in r (columns)
   mutable Eigen::ArrayXd slab_lo_, slab_hi_;
   mutable Eigen::MatrixXd box_cov_;
   mutable Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_;
