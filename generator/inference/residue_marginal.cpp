@@ -213,7 +213,7 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
   // eigenvalues. (Eigenvectors of B taken as they are are B-orthogonal only to ‖B‖ε; where B also has
   // eigenvalues near ‖B‖ε, well-determined residue combinations, the slabs are then correlated and their
   // product can fall below P_box.) Back in r: vⱼ = W⁻¹uⱼ = D⁻¹L̃zⱼ, of t scale √(S_min/ν) since ‖zⱼ‖ = 1.
-  int cut = 0;  // directions whose slab holds less than 1 − 1e-12 of the t
+  cut_slabs_.clear();  // directions whose slab holds less than 1 − 1e-12 of the t
   double log_product = 0.0;
   // When no coordinate marginal reaches a face (every tail beyond the negligible quantile is exactly 0),
   // P_lo = P_up = 1 and the clamp below gives P̃ = 1 whatever the slabs say: no eigendecomposition.
@@ -271,16 +271,15 @@ const ResidueConditional& ResidueMarginal::conditional(const double* poles) cons
       interval(-slab_lo_[j], slab_hi_[j], inside, outside, log_inside);
       log_min_inside = std::min(log_min_inside, log_inside);
       log_product += outside < 0.5 ? std::log1p(-outside) : log_inside;
-      if (outside > 1e-12) ++cut;
+      if (outside > 1e-12) cut_slabs_.push_back(static_cast<int>(j));
     }
   }
-  slab_count_ = slabs;
   c.log_p_up = log_min_inside;
   c.log_p_lo = sum_outside < 1.0 ? std::log1p(-sum_outside) : -std::numeric_limits<double>::infinity();
   // P̃: with one cut direction the product is that slab's exact t probability; with several the slabs
   // share the t's scale variable W ~ χ²_ν, so P̃ = E_W[Π_j P_j | W] (Gaussian slabs given W; quadrature in
   // ln W). Where P_up < 1e-6 (residues far outside the box: no posterior weight) P̃ = P_up.
-  c.log_p_sampled = cut <= 1 ? log_product : log_slab_mixture();
+  c.log_p_sampled = cut_slabs_.size() <= 1 ? log_product : log_slab_mixture();
   c.log_p_sampled = std::clamp(c.log_p_sampled, c.log_p_lo, c.log_p_up);
   c.log_marginal = c.log_untruncated + c.log_p_sampled;
   c.valid = std::isfinite(c.log_marginal);
@@ -292,9 +291,10 @@ double ResidueMarginal::log_slab_mixture() const {
   // y = ln(W/ν), whose density is f(y) = (ν/2)^{ν/2}/Γ(ν/2) · exp(ν/2 · (y − e^y)), sd ≈ √(2/ν). The integrand
   // f(y) Π_j P_j(y) peaks near y₀ = −ln(1 + Σ_j δ_j²/ν), δ_j the distance of the centre from slab j (Gaussian
   // tails e^{−δ²e^y/2} shift the χ² mode), with the same width: 33 nodes over y₀ ± 10 sd, in logs (far
-  // outside the box the product underflows).
+  // outside the box the product underflows). Only the cut slabs enter: leaving out factors ≤ 1 keeps the
+  // bound, and the others hold more than 1 − 1e-12 of the t.
   double distance2 = 0.0;
-  for (int j = 0; j < slab_count_; ++j) {
+  for (int j : cut_slabs_) {
     const double dist = std::max({0.0, slab_lo_[j], -slab_hi_[j]});
     distance2 += dist * dist;
   }
@@ -305,7 +305,7 @@ double ResidueMarginal::log_slab_mixture() const {
   for (int i = 0; i < kNodes; ++i) {
     const double y = centre + sd * (-10.0 + 20.0 * i / (kNodes - 1)), root = std::exp(0.5 * y);  // √(W/ν)
     double term = mixture_log_norm_ + 0.5 * nu * (y - std::exp(y)) + std::log(step);
-    for (int j = 0; j < slab_count_; ++j) term += log_normal_interval(slab_lo_[j] * root, slab_hi_[j] * root);
+    for (int j : cut_slabs_) term += log_normal_interval(slab_lo_[j] * root, slab_hi_[j] * root);
     mixture_terms_[static_cast<std::size_t>(i)] = term;
     best = std::max(best, term);
   }

@@ -98,7 +98,7 @@ class ResidueMarginal {
   double log_slab_mixture() const;
   double mixture_log_norm_ = 0.0;             ///< ln[(ν/2)^{ν/2}/Γ(ν/2)]
   mutable std::vector<double> mixture_terms_;  ///< ln of the quadrature terms over ln(W/ν)
-  mutable int slab_count_ = 0;                 ///< slabs in slab_lo_/slab_hi_
+  mutable std::vector<int> cut_slabs_;         ///< the slabs holding less than 1 − 1e-12 of the t
   mutable Eigen::MatrixXd directions_;         ///< slab directions v in r (columns)
   mutable Eigen::ArrayXd slab_lo_, slab_hi_;
   mutable Eigen::MatrixXd box_cov_;
