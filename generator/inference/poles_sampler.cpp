@@ -2,6 +2,7 @@
 #include "inference/poles_sampler.hpp"
 
 #include "core/rng.hpp"
+#include "inference/evidence.hpp"
 #include "inference/pole_space.hpp"
 #include "inference/posterior.hpp"
 #include "inference/residue_draws.hpp"
@@ -172,7 +173,8 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   const Eigen::ArrayXd weight = posterior_weights(poles);
   Rng rng(draw_seed);
   Eigen::ArrayXd rho = Eigen::ArrayXd::Ones(weight.size());
-  double correction_variance = 0.0;  // Σ p_i² Var(ρ_i)
+  // ln Σ p_i² Var(ρ_i), accumulated in logs: where P̂ ≪ P̃ throughout, its terms underflow in linear terms.
+  double log_correction_variance = -std::numeric_limits<double>::infinity();
   // First pass: which points need the box estimate, and their share of the draw budget. With GHK the
   // relative variance of P̂ is of order one whatever P_box (Var(ρ_i) ≈ κ ρ_i²/m_i), so minimising
   // Σ p_i² κ/m_i under Σ m_i = budget gives m_i ∝ p_i.
@@ -218,7 +220,8 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
       rho[ii] = p_hat > 0.0 ? std::exp(std::log(p_hat) - c.log_p_sampled) : 0.0;
       // Var(ρ_i) = Var(P̂)/P̃² (in logs: P̃ may underflow where the t lies far outside the box).
       if (sample_variance > 0.0)
-        correction_variance += std::exp(2.0 * (std::log(weight[ii]) - c.log_p_sampled) + std::log(sample_variance / md));
+        log_correction_variance = log_add_exp(
+            log_correction_variance, 2.0 * (std::log(weight[ii]) - c.log_p_sampled) + std::log(sample_variance / md));
       if (p_hat > 0.0 && !negligible) {
         ResidueDrawMethod method;
         r = draw_residues(c, lo, hi, rng, method);
@@ -231,9 +234,12 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   }
   const double mean_rho = (weight * rho).sum();
   out.truncation_correction = std::log(mean_rho);
-  out.truncation_correction_error = std::sqrt(correction_variance) / mean_rho;
+  out.truncation_correction_error = std::exp(0.5 * log_correction_variance - std::log(mean_rho));
   if (mean_rho > 0.0) {
-    out.reweighted_ess_ratio = effective_sample_size(weight * rho) / effective_sample_size(weight);
+    // Scaled to a largest weight of 1 first: where P̂ ≪ P̃ everywhere (corrections of hundreds of nats) the
+    // squares of weight·ρ underflow.
+    const Eigen::ArrayXd reweighted = weight * rho;
+    out.reweighted_ess_ratio = effective_sample_size(reweighted / reweighted.maxCoeff()) / effective_sample_size(weight);
     for (std::size_t i = 0; i < poles.size(); ++i) run.log_weight[i] += std::log(rho[static_cast<Eigen::Index>(i)]);
     run.log_z += out.truncation_correction;
     // The reweighted points carry the evidence with fewer effective samples: the sampling error √(H/n)
