@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
+#include "inference/ellipsoid_union.hpp"
 #include "inference/evidence.hpp"
 #include "inference/live_point_clusters.hpp"
 #include "inference/slice_step.hpp"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace admitgen {
 namespace {
@@ -123,9 +125,20 @@ class Compression {
   double contour_ = kMinusInf;
 };
 
-/// The constrained step: the dead point is replaced by a copy of a random surviving live point (it
+/// The constrained step: the dead point is replaced by a uniform draw from the bounding ellipsoids above
+/// the contour (NestedSettings::ellipsoid_draws), or by a copy of a random surviving live point (it
 /// already satisfies L > L*) moved by slice sampling along its cluster's whitened axes; the new point
 /// joins that cluster.
+///
+/// Which of the two: both give a draw from the constrained prior (the ellipsoids up to how well their union
+/// covers the contour), so the choice sets the cost. The ellipsoids serve only while the live points form
+/// one cluster: where they split (several modes, or a spare pole trading roles with another across a
+/// curved region) a missed corner of the contour would lose posterior mass for good, while a slice chain
+/// from a live point reaches wherever live points are. Within one cluster they serve while their
+/// likelihood calls per replacement since the last covariance update stay below a slice chain's running
+/// mean (counting the draws that missed the contour, and the slice chain after a replacement that found
+/// nothing within a slice chain's calls). Where the contour is nearly ellipsoidal one or two calls replace
+/// 3 + dim slices; where it is far from it, slices serve (docs/method.md, "Sampler and evidence error").
 class Replacement {
  public:
   Replacement(const Model& model, const NestedSettings& settings)
@@ -134,25 +147,45 @@ class Replacement {
         slices_(settings.slices > 0 ? settings.slices : 3 + model.dim()),
         cov_interval_(settings.covariance_interval > 0 ? settings.covariance_interval : std::max(1, n_ / 10)),
         min_cluster_(std::max(2 * model.dim(), 20)),
+        ellipsoid_draws_(settings.ellipsoid_draws),
+        enlarge_(settings.ellipsoid_enlarge),
+        slice_calls_(4.0 * slices_),
         step_(model.dim(), model.prior_transform, model.log_likelihood),
         u_(model.dim()),
-        theta_(model.dim()) {}
+        theta_(model.dim()),
+        folded_(model.dim()) {}
 
   void replace(LivePoints& live, Eigen::Index worst, long iteration, Rng& rng, NestedRun& run) {
     // Clusters need enough points for a covariance: at least 2·dim and 20.
     constexpr int kMaxClusters = 8;
-    if (iteration % cov_interval_ == 0) clusters_ = cluster_live_points(live.u, min_cluster_, kMaxClusters);
-    Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n_ - 1)));
-    if (start >= worst) ++start;
-    const int cluster = clusters_.label[static_cast<std::size_t>(start)];
-    u_ = live.u.col(start);
-    theta_ = live.theta.col(start);
-    double log_l = live.log_l[start];
-    step_.set_axes(clusters_.axes[static_cast<std::size_t>(cluster)]);
-    run.calls += step_.move(u_, theta_, log_l, live.log_l[worst], slices_, rng);
-    if (model_.fold) {
-      model_.fold(u_.data());
-      model_.prior_transform(u_.data(), theta_.data());  // same ln L: the likelihood is invariant
+    if (iteration % cov_interval_ == 0) {
+      clusters_ = cluster_live_points(live.u, min_cluster_, kMaxClusters);
+      if (ellipsoid_draws_ && clusters_.axes.size() == 1) {
+        bounds_.emplace(live.u, clusters_, enlarge_);
+        bound_calls_ = bound_draws_ = 0;
+      } else {
+        bounds_.reset();
+      }
+    }
+    int cluster = 0;
+    double log_l = 0.0;
+    const bool bounded = bounds_ && static_cast<double>(bound_calls_) <= slice_calls_ * static_cast<double>(bound_draws_ + 1);
+    if (!bounded || !draw_from_bounds(live.log_l[worst], rng, run, cluster, log_l)) {
+      Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n_ - 1)));
+      if (start >= worst) ++start;
+      cluster = clusters_.label[static_cast<std::size_t>(start)];
+      u_ = live.u.col(start);
+      theta_ = live.theta.col(start);
+      log_l = live.log_l[start];
+      step_.set_axes(clusters_.axes[static_cast<std::size_t>(cluster)]);
+      const long calls = step_.move(u_, theta_, log_l, live.log_l[worst], slices_, rng);
+      run.calls += calls;
+      slice_calls_ = 0.9 * slice_calls_ + 0.1 * static_cast<double>(calls);
+      if (bounded) bound_calls_ += calls;  // the ellipsoids missed: their replacement cost these too
+      if (model_.fold) {
+        model_.fold(u_.data());
+        model_.prior_transform(u_.data(), theta_.data());  // same ln L: the likelihood is invariant
+      }
     }
     clusters_.label[static_cast<std::size_t>(worst)] = cluster;
     live.u.col(worst) = u_;
@@ -161,11 +194,43 @@ class Replacement {
   }
 
  private:
+  /// Draws from the ellipsoids until a point of the canonical domain lies above the contour: true, with
+  /// (u_, theta_, log_l) set. A draw outside the unit cube or off the canonical domain (the fold's fixed
+  /// points; folding it instead would double the density where an ellipsoid crosses a seam) is rejected
+  /// without a likelihood call. Gives up after a slice chain's mean calls or 1000 times as many draws.
+  bool draw_from_bounds(double log_l_min, Rng& rng, NestedRun& run, int& cluster, double& log_l) {
+    const long max_calls = std::max(1L, std::lround(slice_calls_)), max_draws = 1000L * max_calls;
+    long calls = 0;
+    bool found = false;
+    for (long draws = 0; draws < max_draws && calls < max_calls && !found; ++draws) {
+      if (!bounds_->draw(rng, u_, cluster)) continue;
+      if ((u_.array() < 0.0).any() || (u_.array() >= 1.0).any()) continue;
+      if (model_.fold) {
+        folded_ = u_;
+        model_.fold(folded_.data());
+        if (folded_ != u_) continue;
+      }
+      model_.prior_transform(u_.data(), theta_.data());
+      log_l = model_.log_likelihood(theta_.data());
+      ++calls;
+      found = log_l > log_l_min;
+    }
+    run.calls += calls;
+    bound_calls_ += calls;
+    ++bound_draws_;
+    return found;
+  }
+
   const Model& model_;
   int n_, slices_, cov_interval_, min_cluster_;
+  bool ellipsoid_draws_;
+  double enlarge_;
+  double slice_calls_;            ///< running mean of a slice chain's likelihood calls
+  long bound_calls_ = 0, bound_draws_ = 0;  ///< ellipsoid calls and replacements since the last update
   SliceStep step_;
   LivePointClusters clusters_;
-  Eigen::VectorXd u_, theta_;
+  std::optional<EllipsoidUnion> bounds_;
+  Eigen::VectorXd u_, theta_, folded_;
 };
 
 }  // namespace

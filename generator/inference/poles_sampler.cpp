@@ -156,16 +156,20 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   const PoleTransform transform(order, priors, reduce_symmetry);
   const ResidueMarginal marginal(data, order, count, priors);
   const int dim = transform.dim();
+  // The pole space has few dimensions (Q + 2S), where draws from bounding ellipsoids replace slice chains
+  // at a fraction of the calls (inference/ellipsoid_union.hpp).
+  NestedSettings pole_settings = settings;
+  pole_settings.ellipsoid_draws = true;
   if (box_mass == BoxMassMethod::sampled && dim > 0) {
     BoxCoordinates box{order, transform, marginal, dim, {}};
     PolesRun out;
     out.box_mass = BoxMassMethod::sampled;
-    complete_box_sampled(data, order, count, box, run_nested_sampling(box.model(), settings, progress), out);
+    complete_box_sampled(data, order, count, box, run_nested_sampling(box.model(), pole_settings, progress), out);
     return out;
   }
   const NestedRun poles =
       dim == 0 ? analytic_run(marginal, settings.live)
-               : run_nested_sampling(pole_model(order, transform, marginal), settings, progress);
+               : run_nested_sampling(pole_model(order, transform, marginal), pole_settings, progress);
 
   PolesRun out;
   NestedRun& run = out.run;
@@ -178,10 +182,14 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   // First pass: which points need the box estimate, and their share of the draw budget. With GHK the
   // relative variance of P̂ is of order one whatever P_box (Var(ρ_i) ≈ κ ρ_i²/m_i), so minimising
   // Σ p_i² κ/m_i under Σ m_i = budget gives m_i ∝ p_i.
+  // Each point's conditional is solved once, here, and kept for the second pass.
   std::vector<double> share(poles.size(), 0.0);
+  std::vector<ResidueConditional> conditionals;
+  conditionals.reserve(poles.size());
   double share_sum = 0.0, corrected = 0.0;
   for (std::size_t i = 0; i < poles.size(); ++i) {
-    const ResidueConditional& c = marginal.conditional(dim == 0 ? nullptr : poles.point(i));
+    conditionals.push_back(marginal.conditional(dim == 0 ? nullptr : poles.point(i)));
+    const ResidueConditional& c = conditionals.back();
     if (c.valid && -std::expm1(c.log_p_lo - c.log_p_up) > 1e-9) {
       share[i] = weight[static_cast<Eigen::Index>(i)];
       share_sum += share[i];
@@ -192,7 +200,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const Eigen::Index ii = static_cast<Eigen::Index>(i);
     const double* psi = dim == 0 ? nullptr : poles.point(i);
-    const ResidueConditional& c = marginal.conditional(psi);
+    const ResidueConditional& c = conditionals[i];
     if (!c.valid) {  // a numerically singular M (ln L = −∞): never a live or weighted point
       rho[ii] = 0.0;
       continue;
