@@ -131,12 +131,12 @@ void print_sbc(const SbcSettings& st, const std::vector<SbcReplicate>& reps, con
 // ---- order recovery ----------------------------------------------------------------------------------------
 
 std::string recovery_cases_csv(const std::vector<RecoveryCase>& cases) {
-  std::string s = "case,sampler,truth,noise,selected,identifiable,distance_sigma,rms_sigma,nearest_smaller,"
-                  "extra_terms,fallbacks\n";
+  std::string s = "case,sampler,truth,noise,selected,identifiable,distance_sigma,rms_sigma,nearest_competitor,"
+                  "distance_smaller_sigma,extra_terms,fallbacks\n";
   for (const auto& c : cases)
-    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", c.index, c.sampler, c.truth.name(), g(c.noise),
+    s += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", c.index, c.sampler, c.truth.name(), g(c.noise),
                      c.selected.name(), c.identifiable ? 1 : 0, g(c.distance), g(c.rms_sigma), c.nearest.name(),
-                     c.extra_terms, c.fallbacks);
+                     g(c.distance_smaller), c.extra_terms, c.fallbacks);
   return s;
 }
 
@@ -158,8 +158,8 @@ void print_recovery(const RecoverySettings& st, const std::vector<RecoveryCase>&
              "Q0-{} x S0-{}, {} live points, rule best, seed {}\n",
              truths, noise,
              st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.seed);
-  fmt::print("Identifiable: D = min over one-term-smaller orders of ||G_true - G_ml||/sigma >= {:g} (D^2 = gain in max ln "
-             "L, nats)\n",
+  fmt::print("Identifiable: D = min over the competitors (orders that cannot represent the truth with no more terms) of "
+             "||G_true - G_ml||/sigma >= {:g} (D^2 = gain in max ln L, nats)\n",
              kIdentifiableDistance);
   const auto grid = RecoverySettings::order_range(0, st.qmax, 0, st.smax);
   std::set<std::string> samplers;

@@ -156,17 +156,19 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
   const PoleTransform transform(order, priors, reduce_symmetry);
   const ResidueMarginal marginal(data, order, count, priors);
   const int dim = transform.dim();
-  // The pole space has few dimensions (Q + 2S), where draws from bounding ellipsoids replace slice chains
-  // at a fraction of the calls (inference/ellipsoid_union.hpp).
-  NestedSettings pole_settings = settings;
-  pole_settings.ellipsoid_draws = true;
   if (box_mass == BoxMassMethod::sampled && dim > 0) {
     BoxCoordinates box{order, transform, marginal, dim, {}};
     PolesRun out;
     out.box_mass = BoxMassMethod::sampled;
-    complete_box_sampled(data, order, count, box, run_nested_sampling(box.model(), pole_settings, progress), out);
+    complete_box_sampled(data, order, count, box, run_nested_sampling(box.model(), settings, progress), out);
     return out;
   }
+  // The pole space has few dimensions (Q + 2S), where draws from bounding ellipsoids replace slice chains
+  // at a fraction of the calls (inference/ellipsoid_union.hpp). Not with the box mass as coordinates
+  // (p + 1 more): there the draws land where calls cost more, and the reference file's Q3S3 took twice as
+  // long with them.
+  NestedSettings pole_settings = settings;
+  pole_settings.ellipsoid_draws = true;
   const NestedRun poles =
       dim == 0 ? analytic_run(marginal, settings.live)
                : run_nested_sampling(pole_model(order, transform, marginal), pole_settings, progress);
@@ -203,6 +205,7 @@ PolesRun run_poles_sampler(const Measurement& data, const Order& order, const Pr
     const ResidueConditional& c = conditionals[i];
     if (!c.valid) {  // a numerically singular M (ln L = −∞): never a live or weighted point
       rho[ii] = 0.0;
+      run.log_likelihood[i] = -std::numeric_limits<double>::infinity();  // nor the best sample
       continue;
     }
     const Eigen::VectorXd &lo = marginal.box_lo(), &hi = marginal.box_hi();

@@ -315,6 +315,11 @@ double ResidueMarginal::log_slab_mixture() const {
   return best + std::log(sum);
 }
 
-double ResidueMarginal::operator()(const double* poles) const { return conditional(poles).log_marginal; }
+double ResidueMarginal::operator()(const double* poles) const {
+  // An invalid conditional (a singular M, or bounds that came out NaN) is outside the support: −∞, never NaN,
+  // which the sampler's tests (ln L > L*, ln L = −∞) would not catch.
+  const ResidueConditional& c = conditional(poles);
+  return c.valid ? c.log_marginal : -std::numeric_limits<double>::infinity();
+}
 
 }  // namespace admitgen

@@ -83,6 +83,34 @@ ModelResult run_poles(const Measurement& data, const Order& order, const FitSett
   return result;
 }
 
+/// The reweighting keeps at least this fraction of the effective sample size, or the order is re-run
+/// with the box mass sampled (docs/method.md, "Tolerance and fallback").
+constexpr double kMinEssRatio = 0.25;
+
+/// A pilot of the reweighted run at a tenth of the live points (at least 25; fits of 100 live points or
+/// more; docs/method.md, "The pilot run"): the effective-sample ratio measures how P̃/P_box varies over the
+/// posterior, not how many points sample it, so where the pilot keeps less than half the minimum the run
+/// would fail the rule too. Returns why the order goes straight to the box mass sampled, or "" (run the
+/// reweighted path); `calls` gets the pilot's likelihood calls.
+std::string pilot_refusal(const Measurement& data, const Order& order, const FitSettings& settings,
+                          const NestedProgressFn& progress, int round, long& calls) {
+  constexpr int kMinPilotLive = 25;
+  constexpr double kPilotEssRatio = 0.5 * kMinEssRatio;
+  calls = 0;
+  if (order.q() + order.s() == 0 || settings.sampler.live < 4 * kMinPilotLive) return "";
+  FitSettings pilot = settings;
+  pilot.sampler.live = std::max(kMinPilotLive, settings.sampler.live / 10);
+  pilot.sampler.seed = derive_seed(settings.sampler.seed, 0x9170dULL);
+  const ModelResult p = run_poles(data, order, pilot, progress, round, BoxMassMethod::reweighted);
+  calls = p.run.calls;
+  if (p.reweighted_ess_ratio >= kPilotEssRatio) return "";
+  return fmt::format(
+      "the residue box truncates the conditional posterior of the residues too much to correct (a pilot run at {} "
+      "live points kept an effective-sample ratio of {:.2f} after the box correction, less than half the minimum "
+      "{:.2f}): box mass sampled",
+      p.live, p.reweighted_ess_ratio, kMinEssRatio);
+}
+
 }  // namespace
 
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
@@ -97,10 +125,17 @@ ModelResult fit_order(const Measurement& data, const Order& order, const FitSett
     result = run_full(data, order, settings, progress, round);
     result.sampler_note = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
   } else {
-    result = run_poles(data, order, settings, progress, round, BoxMassMethod::reweighted);
-    constexpr double kMinEssRatio = 0.25;
-    if (!(result.truncation_correction_error <= settings.truncation_tolerance &&
-          result.reweighted_ess_ratio >= kMinEssRatio)) {
+    long pilot_calls = 0;
+    const std::string pilot_note = pilot_refusal(data, order, settings, progress, round, pilot_calls);
+    if (!pilot_note.empty()) {
+      result = run_poles(data, order, settings, progress, round, BoxMassMethod::sampled);
+      result.sampler_note = pilot_note;
+    } else {
+      result = run_poles(data, order, settings, progress, round, BoxMassMethod::reweighted);
+    }
+    result.run.calls += pilot_calls;  // the pilot's calls were spent too
+    if (pilot_note.empty() && !(result.truncation_correction_error <= settings.truncation_tolerance &&
+                                result.reweighted_ess_ratio >= kMinEssRatio)) {
       const std::string why = fmt::format(
           "the residue box truncates the conditional posterior of the residues too much to correct (correction "
           "{:.3g} ± {:.3g} nats, tolerance {:.3g}; effective-sample ratio {:.2f}, minimum {:.2f}): box mass sampled",

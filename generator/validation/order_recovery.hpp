@@ -4,14 +4,19 @@
 /// calibration.hpp simulate: plausible draws from band_priors, fixed relative noise), fitted over the whole
 /// grid by run_fit as `fit` does (with the same priors), the selected order against the truth.
 ///
-/// Identifiability of the truth's last term. For each order one term smaller that the truth contains,
-/// (Q − 1, S) and (Q, S − 1), take its maximum-likelihood model Ĝ from the same fit; the measure is
-///   D = min over those orders of ‖G_true − Ĝ‖ / σ_c,   ‖x‖² = Σ_i |x_i|² over the N points,
-/// σ_c the complex noise std. D² is the gain in the best ln L that the truth's extra term brings at known σ
-/// (per real component variance σ_c²/2), i.e. how strongly the data ask for it. The truth is identifiable
-/// when D ≥ kIdentifiableDistance = 10 (a gain of 100 nats, 2.5× the largest Occam penalty of one term: a pair
-/// has 4 parameters, each known to ≳ 1e-4 of its prior width, ln 1e4 · 4 ≈ 37 nats). Below it a smaller
-/// order may legitimately win. The RMS form D/√N is reported too.
+/// Identifiability of the truth. Its competitors are the orders of the fitted grid that cannot represent
+/// it (Q' < Q or S' < S) with at most as many terms (Q' + S' ≤ Q + S): the orders one term smaller, and
+/// those with a real pole in place of a pair or a pair in place of a real pole (a pair with β → 0 and a
+/// real pole, or two real poles and a heavily damped pair, can make nearly the same admittance over a
+/// band). For each, its maximum-likelihood model Ĝ from the same fit; the measure is
+///   D = min over the competitors of ‖G_true − Ĝ‖ / σ_c,   ‖x‖² = Σ_i |x_i|² over the N points,
+/// σ_c the complex noise std. D² is the gain in the best ln L that the truth's structure brings over the
+/// closest competitor at known σ (per real component variance σ_c²/2), i.e. how strongly the data ask for
+/// it. The truth is identifiable when D ≥ kIdentifiableDistance = 10 (a gain of 100 nats, 2.5× the largest
+/// Occam penalty of one term: a pair has 4 parameters, each known to ≳ 1e-4 of its prior width,
+/// ln 1e4 · 4 ≈ 37 nats). Below it a competitor may legitimately win. The same D over the one-term-smaller
+/// orders alone (whether the last term is needed at all, not which kind it is) is reported as
+/// distance_smaller, and the RMS form D/√N too (docs/validation.md, "Order recovery").
 #pragma once
 
 #include "selection/fit.hpp"
@@ -47,13 +52,18 @@ struct RecoveryCase {
   double noise = 0.0;
   std::string sampler;
   Order selected{0, 0};
-  double distance = 0.0;     ///< D (see the file comment)
+  double distance = 0.0;     ///< D over the competitors (see the file comment)
+  double distance_smaller = 0.0;  ///< D over the one-term-smaller orders alone (≥ distance)
   double rms_sigma = 0.0;    ///< D/√N
-  Order nearest{0, 0};       ///< the one-term-smaller order that attains D
+  Order nearest{0, 0};       ///< the competitor that attains D
   bool identifiable = false;
   int extra_terms = 0;       ///< (Q + S) selected − (Q + S) true
   int fallbacks = 0;         ///< orders the pole sampler re-ran with the box mass sampled (selection/fit.hpp)
 };
+
+/// Whether `order` competes with `truth` (see the file comment): it cannot represent the truth and has no
+/// more terms.
+bool is_competitor(const Order& order, const Order& truth);
 
 /// Every (truth, noise, replicate) data set fitted with every sampler; data set i uses the same simulation
 /// for every sampler. In parallel over `threads` (each fit single-threaded); independent of the thread count.
