@@ -26,10 +26,10 @@ struct NestedSettings {
   int slices = 0;                      ///< 1-D slices per replacement; 0 = automatic (3 + dim)
   std::uint64_t seed = 1;
   int covariance_interval = 0;         ///< iterations between covariance updates; 0 = live/10
-  /// Constrained step by uniform draws in the union of the clusters' bounding ellipsoids
-  /// (inference/ellipsoid_union.hpp), each kept when above the contour; a replacement that finds none
-  /// within the calls of a slice chain moves by slices instead, and slices alone serve until the next
-  /// covariance update. false: slices only.
+  /// Constrained step by uniform draws in the live points' bounding ellipsoid (inference/ellipsoid_union.hpp),
+  /// each kept when above the contour, while the live points form one cluster and the draws cost fewer calls
+  /// than a slice chain; a replacement that finds none within a slice chain's calls moves by slices instead
+  /// (the rule is stated at Replacement in nested_sampler.cpp). false: slices only.
   bool ellipsoid_draws = false;
   /// Volume of each bounding ellipsoid over the tightest one of its shape that holds its cluster.
   double ellipsoid_enlarge = 2.0;
