@@ -155,9 +155,14 @@ void print_recovery(const RecoverySettings& st, const std::vector<RecoveryCase>&
   std::string truths;
   for (const auto& t : st.truths) truths += (truths.empty() ? "" : ",") + t.name();
   fmt::print("Order recovery: truths {}, noise {} of rms|G|, {} data sets per cell, grid {} ({} pts), fitted "
-             "Q0-{} x S0-{}, {} live points, rule best, seed {}\n",
+             "Q0-{} x S0-{}, {} live points, rule best, seed {}, design {}\n",
              truths, noise,
-             st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.seed);
+             st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.seed,
+             st.design == RecoveryDesign::distinct
+                 ? fmt::format("distinct (natural frequencies a factor >= {:g} apart, pair quality >= {:g}, every term "
+                               ">= {:g} of ||G||)",
+                               kDistinctRatio, kMinPairQuality, kMinTermShare)
+                 : std::string("prior"));
   fmt::print("Identifiable: D = min over the competitors (orders that cannot represent the truth with no more terms) of "
              "||G_true - G_ml||/sigma >= {:g} (D^2 = gain in max ln L, nats)\n",
              kIdentifiableDistance);
@@ -239,6 +244,11 @@ int main(int argc, char** argv) {
   app.add_option("--truths", truths, "order recovery: true orders")->capture_default_str();
   app.add_option("--noise", noise, "order recovery: noise levels (complex std / rms|G|)")->capture_default_str();
   app.add_option("--recovery-samplers", rec_samplers, "order recovery: samplers (full, poles)")->capture_default_str();
+  std::string design = "prior";
+  app.add_option("--design", design, "order recovery: true models from the plausible prior, or restricted to "
+                                     "distinct terms (validation/order_recovery.hpp)")
+      ->check(CLI::IsMember({"prior", "distinct"}))
+      ->capture_default_str();
   app.add_option("--qmax", rec.qmax, "order recovery: fitted grid Q0-qmax")->capture_default_str();
   app.add_option("--smax", rec.smax, "order recovery: fitted grid S0-smax")->capture_default_str();
   app.add_option("--seed", seed, "seed of the whole run")->capture_default_str();
@@ -250,6 +260,7 @@ int main(int argc, char** argv) {
     sbc.orders = parse_orders(orders);
     rec.samplers = parse_samplers(rec_samplers);
     rec.truths = parse_orders(truths);
+    rec.design = design == "distinct" ? RecoveryDesign::distinct : RecoveryDesign::prior;
     rec.noise.clear();
     for (const auto& n : split(noise)) rec.noise.push_back(std::stod(n));
     if ((sbc.draws + 1) % 40 != 0 || bins < 2 || (sbc.draws + 1) % bins != 0)

@@ -52,6 +52,66 @@ FloatCoefficients to_float(const DiscreteModel& m) {
   return f;
 }
 
+namespace {
+
+/// Per-term exponent: the largest shift with the (sum of the n) mantissas inside 2^B minus rounding room.
+int term_shift(double magnitude_sum, int n, int b) {
+  const double full = std::ldexp(1.0, b);
+  int s = -4;
+  while (s < 62 - b && magnitude_sum * std::ldexp(1.0, b + s + 1) <= full - n - 1) ++s;
+  return s;
+}
+
+/// A real term's pole in B fraction bits (output coefficient left 0).
+FixedCoefficients::Real quantise_pole(const RealTerm& r, int b) {
+  FixedCoefficients::Real t{};
+  t.shift = term_shift(r.eps, 1, b);
+  ADMITGEN_ENSURE(t.shift >= 0, "eps {} must be below 1", r.eps);
+  t.eps = std::max<std::int32_t>(1, round_to_int(std::ldexp(r.eps, b + t.shift), b));
+  return t;
+}
+
+/// A pair's pole and input gain in B fraction bits (output coefficients left 0).
+FixedCoefficients::Pair quantise_pole(const PairTerm& p, int b) {
+  FixedCoefficients::Pair t{};
+  t.shift = term_shift(std::abs(p.e_r) + std::abs(p.p_i) + p.g, 3, b);
+  t.e_r = round_to_int(std::ldexp(p.e_r, b + t.shift), b);
+  t.p_i = round_to_int(std::ldexp(p.p_i, b + t.shift), b);
+  t.g = round_to_int(std::ldexp(p.g, b + t.shift), b);
+  return t;
+}
+
+void set_pair_rates(PairTerm& t, double fs_hz) {
+  t.alpha = -std::log(std::hypot(1.0 + t.e_r, t.p_i)) * fs_hz;
+  t.beta = -std::atan2(t.p_i, 1.0 + t.e_r) * fs_hz;
+}
+
+}  // namespace
+
+void store_poles(DiscreteModel& m, Format format) {
+  const auto to_f = [](double v) { return static_cast<double>(static_cast<float>(v)); };
+  const int b = format == Format::q31 ? 31 : 15;
+  for (auto& r : m.real) {
+    if (format == Format::f32) {
+      r.eps = to_f(r.eps);
+    } else {
+      const auto t = quantise_pole(r, b);
+      r.eps = std::ldexp(double(t.eps), -(b + t.shift));
+    }
+    r.lambda = -std::log1p(-r.eps) * m.fs_hz;
+  }
+  for (auto& p : m.pair) {
+    if (format == Format::f32) {
+      p.e_r = to_f(p.e_r), p.p_i = to_f(p.p_i), p.g = to_f(p.g);
+    } else {
+      const auto t = quantise_pole(p, b);
+      const double s = std::ldexp(1.0, -(b + t.shift));
+      p.e_r = t.e_r * s, p.p_i = t.p_i * s, p.g = t.g * s;
+    }
+    set_pair_rates(p, m.fs_hz);
+  }
+}
+
 FixedCoefficients quantise(const DiscreteModel& m, Format format) {
   ADMITGEN_ENSURE(format != Format::f32, "quantise() is for q31/q15");
   FixedCoefficients q;
@@ -60,27 +120,8 @@ FixedCoefficients quantise(const DiscreteModel& m, Format format) {
   const int b = q.bits;
   const double full = std::ldexp(1.0, b);
 
-  // Per-term exponents: the largest shift with the (sum of) mantissas inside 2^B (minus rounding room).
-  auto term_shift = [&](double magnitude_sum, int n) {
-    int s = -4;
-    while (s < 62 - b && magnitude_sum * std::ldexp(1.0, b + s + 1) <= full - n - 1) ++s;
-    return s;
-  };
-  for (const auto& r : m.real) {
-    FixedCoefficients::Real t{};
-    t.shift = term_shift(r.eps, 1);
-    ADMITGEN_ENSURE(t.shift >= 0, "eps {} must be below 1", r.eps);
-    t.eps = std::max<std::int32_t>(1, round_to_int(std::ldexp(r.eps, b + t.shift), b));
-    q.real.push_back(t);
-  }
-  for (const auto& p : m.pair) {
-    FixedCoefficients::Pair t{};
-    t.shift = term_shift(std::abs(p.e_r) + std::abs(p.p_i) + p.g, 3);
-    t.e_r = round_to_int(std::ldexp(p.e_r, b + t.shift), b);
-    t.p_i = round_to_int(std::ldexp(p.p_i, b + t.shift), b);
-    t.g = round_to_int(std::ldexp(p.g, b + t.shift), b);
-    q.pair.push_back(t);
-  }
+  for (const auto& r : m.real) q.real.push_back(quantise_pole(r, b));
+  for (const auto& p : m.pair) q.pair.push_back(quantise_pole(p, b));
 
   // Output table: one exponent from the sum of magnitudes.
   std::vector<double> out;
@@ -131,9 +172,7 @@ DiscreteModel FixedCoefficients::dequantised(double fs_hz) const {
     t.e_r = p.e_r * s;
     t.p_i = p.p_i * s;
     t.g = p.g * s;
-    const double radius = std::hypot(1.0 + t.e_r, t.p_i);
-    t.alpha = -std::log(radius) * fs_hz;
-    t.beta = -std::atan2(t.p_i, 1.0 + t.e_r) * fs_hz;
+    set_pair_rates(t, fs_hz);
     t.c = {0.5 * p.c_r * ys, -0.5 * p.c_i * ys};
     d.pair.push_back(t);
   }

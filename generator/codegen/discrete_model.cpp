@@ -414,6 +414,7 @@ DiscreteModel discretise_with_fold(const Order& order, const Eigen::VectorXd& th
                                    const std::vector<double>& data_f_hz, const DiscretiseOptions& options) {
   require_representable(order, theta, fs_hz, data_f_hz);
   DiscreteModel m = discrete_poles(order, theta, fs_hz, options.fold_factor);
+  if (options.store_poles) options.store_poles(m);
   const RefitTarget tg = refit_target(order, theta, fs_hz, data_f_hz);
   m.plrc_max_rel_error = plrc_max_rel_error(order, theta, 1.0 / fs_hz, tg);
   if (options.fir_taps > 0) {

@@ -99,6 +99,11 @@ struct DiscretiseOptions {
   std::function<std::vector<double>(const DiscreteModel&)> passivity_violations;
   /// Margin of the constraints above, relative to max|G| over the data (it absorbs coefficient rounding).
   double passive_margin = 1e-9;
+  /// When set, replaces every kept pole by its value as the emitted format stores it (codegen/coefficients.hpp
+  /// store_poles) before the numerators are refitted, so that the refit and its passivity certificate hold for
+  /// the poles the header carries, not only for the exact images e^{−aT} (docs/passivity.md, "Refit to the
+  /// stored poles"). A narrow pair's rounded pole moves its resonance by a fraction of its width.
+  std::function<void(DiscreteModel&)> store_poles;
   static constexpr int kMaxFirTaps = 8;
 };
 

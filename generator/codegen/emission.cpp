@@ -304,6 +304,8 @@ Emission prepare_emission(const EmissionSource& source, const EmitSettings& sett
   options.fir_taps = settings.fir_taps;
   options.passivity_violations = settings.passivity_violations;
   options.passive_margin = settings.passive_margin;
+  if (settings.refit_to_stored_poles)
+    options.store_poles = [format = settings.format](DiscreteModel& m) { store_poles(m, format); };
   for (double fs : settings.fs_hz) {
     EmittedRate r;
     r.fs_hz = static_cast<int>(fs);
@@ -346,7 +348,8 @@ Json emission_json(const Emission& e) {
   Json rates = Json::array();
   for (const auto& r : e.rates) {
     Json j{{"fs_hz", r.fs_hz},
-           {"method", "matched_exponential_refit"},
+           {"method", e.settings.refit_to_stored_poles ? "matched_exponential_refit_to_stored_poles"
+                                                       : "matched_exponential_refit"},
            {"refit_max_rel_error", r.model.refit_max_rel_error},
            {"plrc_max_rel_error", r.model.plrc_max_rel_error},
            {"passive_certified", r.model.passive_certified},

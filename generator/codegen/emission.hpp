@@ -38,6 +38,9 @@ struct EmitSettings {
   /// false: the emit pipeline neither repairs a non-passive estimate nor constrains the refit (experts).
   bool enforce_passivity = true;
   double passive_margin = 1e-9;
+  /// Refit the numerators to the poles as the format stores them (DiscretiseOptions::store_poles); emit
+  /// turns it on only when the refit to the exact poles cannot be certified after rounding.
+  bool refit_to_stored_poles = false;
 };
 
 /// What emit changed to make the continuous model passive (stamped in the header's model block).

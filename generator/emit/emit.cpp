@@ -105,12 +105,19 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
     source.notes.push_back("emitted without passivity enforcement (" + setting("enforce_passivity = false") + ")");
   }
   EmitResult r;
-  for (double margin : kMargins) {
-    settings.passive_margin = margin;
-    r.emission = codegen::prepare_emission(source, settings);
-    r.header = codegen::render_header(r.emission, template_text, header_file_name);
-    r.report = checks::run_checks(checks::subject_from_header(r.header, header_file_name));
-    if (!settings.enforce_passivity || !discrete_passivity_failed(r.report)) break;
+  // First the refit to the exact discrete poles, at rising margins; where rounding the poles themselves
+  // breaks every certificate (a narrow pair whose stored pole moves its resonance), the refit to the poles
+  // as stored (docs/passivity.md, "Refit to the stored poles").
+  for (bool stored : {false, true}) {
+    if (stored && !settings.enforce_passivity) break;
+    settings.refit_to_stored_poles = stored;
+    for (double margin : kMargins) {
+      settings.passive_margin = margin;
+      r.emission = codegen::prepare_emission(source, settings);
+      r.header = codegen::render_header(r.emission, template_text, header_file_name);
+      r.report = checks::run_checks(checks::subject_from_header(r.header, header_file_name));
+      if (!settings.enforce_passivity || !discrete_passivity_failed(r.report)) return r;
+    }
   }
   return r;
 }

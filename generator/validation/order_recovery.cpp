@@ -26,6 +26,35 @@ bool is_competitor(const Order& order, const Order& truth) {
   return !contains_truth && order.q() + order.s() <= truth.q() + truth.s();
 }
 
+bool distinct_terms(const Order& order, const double* theta, const Eigen::ArrayXd& omega) {
+  std::vector<double> natural;
+  for (int q = 0; q < order.q(); ++q) natural.push_back(theta[Order::lambda(q)]);
+  for (int s = 0; s < order.s(); ++s) {
+    const double w0 = std::hypot(theta[order.alpha(s)], theta[order.beta(s)]);
+    if (!(w0 >= 2.0 * kMinPairQuality * theta[order.alpha(s)])) return false;
+    natural.push_back(w0);
+  }
+  std::sort(natural.begin(), natural.end());
+  for (std::size_t k = 1; k < natural.size(); ++k)
+    if (!(natural[k] >= kDistinctRatio * natural[k - 1])) return false;
+  Eigen::ArrayXd re, im;
+  evaluate_multipole(order, theta, omega, re, im);
+  const double norm_g = std::sqrt((re.square() + im.square()).sum());
+  const auto share = [&](const Order& term, const double* th) {
+    evaluate_multipole(term, th, omega, re, im);
+    return std::sqrt((re.square() + im.square()).sum()) / norm_g;
+  };
+  for (int q = 0; q < order.q(); ++q) {
+    const double th[3] = {0.0, theta[Order::a(q)], theta[Order::lambda(q)]};
+    if (!(share(Order(1, 0), th) >= kMinTermShare)) return false;
+  }
+  for (int s = 0; s < order.s(); ++s) {
+    const double th[5] = {0.0, theta[order.b(s)], theta[order.c(s)], theta[order.alpha(s)], theta[order.beta(s)]};
+    if (!(share(Order(0, 1), th) >= kMinTermShare)) return false;
+  }
+  return true;
+}
+
 namespace {
 
 RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind kind) {
@@ -36,7 +65,11 @@ RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind k
   // Streams above those of run_sbc's replicates, so a recovery data set is never an SBC one.
   const std::uint64_t seed = derive_seed(settings.seed, 1'000'000u + static_cast<std::uint64_t>(index));
   const PriorRanges priors = band_priors(settings.grid, settings.base_priors);
-  const Simulation sim = simulate(truth, settings.grid, noise, noise, priors, seed);
+  const Eigen::ArrayXd grid_omega = 2.0 * EIGEN_PI * settings.grid.f_hz();
+  const auto distinct = [&](const double* th) { return distinct_terms(truth, th, grid_omega); };
+  const Simulation sim = settings.design == RecoveryDesign::distinct
+                             ? simulate(truth, settings.grid, noise, noise, priors, seed, distinct)
+                             : simulate(truth, settings.grid, noise, noise, priors, seed);
 
   FitSettings fit;
   fit.qmax = settings.qmax;

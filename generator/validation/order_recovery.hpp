@@ -30,6 +30,23 @@ namespace admitgen::validation {
 
 constexpr double kIdentifiableDistance = 10.0;
 
+/// How the true models are drawn. `prior`: the calibration's plausible prior (validation/calibration.hpp),
+/// where most truths of three or more terms hide a term behind the others (unidentifiable). `distinct`: that
+/// prior further restricted to models whose terms are told apart by the band (distinct_terms below), the
+/// design that measures the identifiable rate on many sets. D decides identifiability in both.
+enum class RecoveryDesign { prior, distinct };
+
+/// The `distinct` restriction (docs/validation.md, "Order recovery"): the natural frequencies (λ_q,
+/// |α_s + jβ_s|) at least a factor kDistinctRatio apart from each other, every pair resonant (quality factor
+/// |θ_s|/(2α_s) ≥ kMinPairQuality, damping ratio ≤ ½, so that no real pole or pair of real poles mimics it),
+/// and every term's share ‖term‖/‖G‖ over the grid ≥ kMinTermShare (‖·‖ the 2-norm over the points). At the
+/// largest noise of the map (3 % of rms|G|, 150 points) a term of that share stands kMinTermShare·√N/0.03 ≈
+/// 41 σ above the noise. Invariant under the label symmetries.
+constexpr double kDistinctRatio = 1.5;
+constexpr double kMinPairQuality = 1.0;
+constexpr double kMinTermShare = 0.1;
+bool distinct_terms(const Order& order, const double* theta, const Eigen::ArrayXd& omega);
+
 struct RecoverySettings {
   std::vector<Order> truths = order_range(0, 2, 1, 3);  ///< Q0-2 × S1-3
   std::vector<double> noise{0.003, 0.01, 0.03};
@@ -38,6 +55,7 @@ struct RecoverySettings {
   int qmax = 3, smax = 3;    ///< the fitted grid
   int live = 100;
   std::vector<SamplerKind> samplers{SamplerKind::full};
+  RecoveryDesign design = RecoveryDesign::prior;
   std::uint64_t seed = 1;
   int threads = 0;
   PriorRanges base_priors = PriorRanges::table1();  ///< clipped to the band by band_priors, for truths and fits

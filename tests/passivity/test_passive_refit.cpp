@@ -86,3 +86,41 @@ TEST_CASE("emit pipeline: every format and rate of the reference fit passes admi
     CHECK(r.header.find("no passive estimate") != std::string::npos);
   }
 }
+
+TEST_CASE("passive refit: a narrow pair in q15 is certified only when refitted to the poles as stored") {
+  // G = G∞ + Θ/(θ + jω) + conj, Θ = B + jC, θ = α + jβ with B = C = α = 0.3 s⁻¹, β = 2π·1738 s⁻¹, G∞ = 0.21.
+  // Near the resonance Re[Θ/(α + jx)] = (Bα + Cx)/(α² + x²) has its minimum (B − √(B² + C²))/(2α) = −0.207,
+  // so G is passive by a hair (the conjugate term adds ~1e-5). In q15 at 96 kHz the pair's term exponent is 3
+  // (|e_r| + |p_i| + g ≈ 0.12), so α and β are stored to about 2^-18 · 96 000 ≈ 0.37 s⁻¹, as much as the
+  // peak's half width α (docs/passivity.md, "Refit to the stored poles"):
+  // numerators refitted to the exact pole leave Re H < 0 once rounded at every margin emit tries, those
+  // refitted to the stored pole are certified and stay so once rounded.
+  const Order order(0, 1);
+  Eigen::VectorXd theta(order.dim());
+  theta << 0.21, 0.3, 0.3, 0.3, 2.0 * 3.14159265358979323846 * 1738.0;
+  REQUIRE(continuous_passivity(order, theta.data()).passive);
+  auto f = log_grid(200.0, 4000.0, 300);
+  for (double df = -2.0; df <= 2.0; df += 0.05) f.push_back(1738.0 + df);  // the data resolve the peak
+  std::sort(f.begin(), f.end());
+  const auto quantised_passive = [&](bool stored, double margin) {
+    codegen::DiscretiseOptions o;
+    o.passivity_violations = emit::discrete_passivity_violations;
+    o.passive_margin = margin;
+    if (stored) o.store_poles = [](DiscreteModel& m) { codegen::store_poles(m, codegen::Format::q15); };
+    const DiscreteModel m = codegen::discretise(order, theta, 96000.0, f, o);
+    const auto q = codegen::quantise(m, codegen::Format::q15);
+    if (stored) {  // the stored pole is what quantise stores again
+      const auto again = codegen::quantise(q.dequantised(96000.0), codegen::Format::q15);
+      CHECK(again.pair[0].e_r == q.pair[0].e_r);
+      CHECK(again.pair[0].p_i == q.pair[0].p_i);
+      CHECK(again.pair[0].g == q.pair[0].g);
+      CHECK(again.pair[0].shift == q.pair[0].shift);
+    }
+    return m.passive_certified && checks::discrete_passivity(q.dequantised(96000.0)).passive;
+  };
+  for (double margin : {1e-9, 1e-6, 1e-5, 1e-4, 1e-3}) {
+    CAPTURE(margin);
+    CHECK_FALSE(quantised_passive(false, margin));
+  }
+  CHECK(quantised_passive(true, 1e-9));
+}

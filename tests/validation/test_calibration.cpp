@@ -50,6 +50,30 @@ TEST_CASE("order recovery: the competitors of a truth are the orders that cannot
   for (const Order& o : {Order(3, 0), Order(1, 2), Order(0, 3)}) CHECK_FALSE(is_competitor(o, Order(0, 2)));
 }
 
+TEST_CASE("order recovery: the distinct design keeps resonant, separated, visible terms only") {
+  const Eigen::ArrayXd omega = 2.0 * EIGEN_PI * tube_grid().f_hz();
+  // One pair alone (G∞ = 0) has share ‖term‖/‖G‖ = 1 exactly; α = 1000, β = 5000 s⁻¹: quality
+  // |θ|/(2α) = √26/2 = 2.55 ≥ 1.
+  const double resonant[5] = {0.0, 100.0, 0.0, 1000.0, 5000.0};
+  CHECK(distinct_terms(Order(0, 1), resonant, omega));
+  // α = 4000, β = 3000: |θ| = 5000, quality 0.625 < 1 (a real pole or two mimic it).
+  const double damped[5] = {0.0, 100.0, 0.0, 4000.0, 3000.0};
+  CHECK_FALSE(distinct_terms(Order(0, 1), damped, omega));
+  // G∞ = 3 beside the first pair: ‖G∞‖ = 3√150 ≈ 37, the pair's norm is below |B|/α · √150 = 1.2, so its share
+  // is below 0.04 < kMinTermShare.
+  const double hidden[5] = {3.0, 100.0, 0.0, 1000.0, 5000.0};
+  CHECK_FALSE(distinct_terms(Order(0, 1), hidden, omega));
+  // Two pairs: natural frequencies 5099 and 6083 s⁻¹ (ratio 1.19 < 1.5) are refused; 5099 and 10 050
+  // (ratio 1.97) pass with both shares near ½.
+  const double close[9] = {0.0, 100.0, 0.0, 1000.0, 5000.0, 100.0, 0.0, 1000.0, 6000.0};
+  const double apart[9] = {0.0, 100.0, 0.0, 1000.0, 5000.0, 200.0, 0.0, 1000.0, 10000.0};
+  CHECK_FALSE(distinct_terms(Order(0, 2), close, omega));
+  CHECK(distinct_terms(Order(0, 2), apart, omega));
+  // A real pole at λ = 6000 between them breaks the separation of the second set.
+  const double between[11] = {0.0, 3000.0, 6000.0, 100.0, 0.0, 1000.0, 5000.0, 200.0, 0.0, 1000.0, 10000.0};
+  CHECK_FALSE(distinct_terms(Order(1, 2), between, omega));
+}
+
 TEST_CASE("calibration: the central rank sets are exactly nominal for L + 1 a multiple of 40") {
   for (int draws : {39, 79, 199}) {
     int in50 = 0, in95 = 0;
