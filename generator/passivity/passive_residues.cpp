@@ -16,9 +16,11 @@ namespace admitgen::passivity {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-/// Margin δ of the constraints, relative to the target's largest |t| (far above the ~1e-15 rounding of
-/// Re G, far below any measurable change of the model).
-constexpr double kMarginFraction = 1e-9;
+/// Margins δ of the constraints, relative to the target's largest |t|, tried in turn: 1e-9 is far above the
+/// ~1e-15 rounding of Re G and far below any measurable change of the model; where the rounds cannot close a
+/// dip at that margin (a pair a few s⁻¹ wide whose Re G curves faster than the points added can follow),
+/// a larger margin lifts Re G across the dip (1e-4 of max|t| is still far below the data's noise).
+constexpr double kMarginFractions[] = {1e-9, 1e-6, 1e-4};
 /// Initial constraint grid: log-spaced points per decade from 1e-3 × the slowest pole to 1e3 × the
 /// fastest (Re G of a pole term varies on the scale of its own rate; 16 per decade resolves it).
 constexpr int kPointsPerDecade = 16;
@@ -79,27 +81,30 @@ PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& thet
   Eigen::MatrixXd e;
   Eigen::VectorXd f;
   weighted_system(order, theta, target, e, f);
-  const double margin = kMarginFraction * std::max(target.values.abs().maxCoeff(), 1e-300);
   std::vector<double> omega = initial_constraints(order, theta, target);
   PassiveResidues out;
   out.theta = theta;
-  for (out.rounds = 1; out.rounds <= kMaxRounds; ++out.rounds) {
-    std::sort(omega.begin(), omega.end());
-    omega.erase(std::unique(omega.begin(), omega.end()), omega.end());
-    const Eigen::ArrayXd w = Eigen::Map<const Eigen::ArrayXd>(omega.data(), Eigen::Index(omega.size()));
-    const Eigen::MatrixXd g = residue_basis(order, theta, w).re;  // Re G(jω_j) = g_j · r
-    // Solved with 2δ: the slack absorbs the dips of Re G between constraint points (each would cost a round).
-    const auto sol = numerics::least_squares_inequality(e, f, g, Eigen::VectorXd::Constant(g.rows(), 2.0 * margin));
-    ADMITGEN_ENSURE(sol.feasible, "passive residues: constraints Re G >= margin are infeasible (cannot happen: "
-                                  "r = (margin, 0, ...) satisfies them)");
-    set_residues(order, sol.x, out.theta);
-    out.constraints = static_cast<int>(omega.size());
-    out.certificate = continuous_passivity(order, out.theta.data());
-    if (out.certificate.passive) {
-      out.certified = true;
-      return out;
+  for (const double fraction : kMarginFractions) {
+    const double margin = fraction * std::max(target.values.abs().maxCoeff(), 1e-300);
+    for (out.rounds = 1; out.rounds <= kMaxRounds; ++out.rounds) {
+      std::sort(omega.begin(), omega.end());
+      omega.erase(std::unique(omega.begin(), omega.end()), omega.end());
+      const Eigen::ArrayXd w = Eigen::Map<const Eigen::ArrayXd>(omega.data(), Eigen::Index(omega.size()));
+      const Eigen::MatrixXd g = residue_basis(order, theta, w).re;  // Re G(jω_j) = g_j · r
+      // Solved with 2δ: the slack absorbs the dips of Re G between constraint points (each would cost a round).
+      const auto sol = numerics::least_squares_inequality(e, f, g, Eigen::VectorXd::Constant(g.rows(), 2.0 * margin));
+      ADMITGEN_ENSURE(sol.feasible, "passive residues: constraints Re G >= margin are infeasible (cannot happen: "
+                                    "r = (margin, 0, ...) satisfies them)");
+      set_residues(order, sol.x, out.theta);
+      out.constraints = static_cast<int>(omega.size());
+      out.certificate = continuous_passivity(order, out.theta.data());
+      if (out.certificate.passive) {
+        out.certified = true;
+        out.margin_fraction = fraction;
+        return out;
+      }
+      add_violations(out.certificate, omega);
     }
-    add_violations(out.certificate, omega);
   }
   out.rounds = kMaxRounds;
   return out;

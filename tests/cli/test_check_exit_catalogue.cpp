@@ -133,7 +133,7 @@ TEST_CASE("check catalogue: broken fit.json and headers exit 1 naming the check,
     broken.push_back({"edited_table_q31.h", h, "header_integrity", ""});
   }
   {  // an unsafe filter written with --allow-unsafe: 6 taps at 16 kHz cancel in float (test_check_cli.cpp)
-    const auto r = test::run_admitgen(fmt::format("emit '{}' --fs 16000 --fir-taps 6 --format f32 --allow-unsafe --out {}/w16.h",
+    const auto r = test::run_admitgen(fmt::format("emit '{}' --fs 16000 --fir-taps 5 --format f32 --allow-unsafe --out {}/w16.h",
                                                   fit_path, dir));
     REQUIRE(r.exit_code == 0);
     broken.push_back({"allow_unsafe_f32_16k.h", test::read_text(dir + "/w16.h"), "passivity_discrete", ""});
