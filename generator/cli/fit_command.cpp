@@ -124,9 +124,9 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                 "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
                 "truncated to passive models");
   add_parsed_option(*sub, "--sampler", s.sampler_kind, parse_sampler_kind,
-                    "poles (default): sample the poles, integrate the residues analytically (an order whose residue "
-                    "box cannot be corrected for afterwards is re-run with the box mass sampled; fit.json says which "
-                    "ran); full: sample every parameter (cross-checks; --passive always does)")
+                    "full (default): sample every parameter (--passive always does); poles: sample the poles, "
+                    "integrate the residues analytically (an order whose residue box cannot be corrected for "
+                    "afterwards is re-run with the box mass sampled; fit.json says which ran)")
       ->check(CLI::IsMember({"poles", "full"}))->default_str(s.sampler_kind == SamplerKind::full ? "full" : "poles");
 }
 

@@ -47,10 +47,11 @@ struct FitSettings {
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;
-  /// The pole sampler by default: it finds the modes the full sampler misses on real files and its posterior
-  /// is calibrated (docs/method.md, "Status of the pole sampler"; docs/validation.md); `passive` needs the
-  /// residues sampled and runs the full sampler whatever this says.
-  SamplerKind sampler_kind = SamplerKind::poles;
+  /// full by default: the pole sampler (which finds modes the full sampler misses, and whose posterior is
+  /// calibrated) still takes far longer where the residue box cuts the conditional posterior hard, e.g.
+  /// over 15 min against 2 for the bundled rect_10cm.csv over Q0-3 × S0-3 (docs/method.md, "Status of the
+  /// pole sampler"); `passive` needs the residues sampled in any case.
+  SamplerKind sampler_kind = SamplerKind::full;
   /// The pole sampler's box correction (inference/poles_sampler.hpp) is accepted when its Monte Carlo
   /// error is at most this (nats; a fraction of the sampling error √(H/n) ≈ 0.2-0.6 of the default
   /// runs) and the reweighting keeps at least a quarter of the effective sample size (the sampling error

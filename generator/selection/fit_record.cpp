@@ -47,7 +47,11 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.select = s.rule.describe();
   r.qmax = s.qmax;
   r.smax = s.smax;
-  r.sampler.method = "nested sampling, slice steps along whitened random directions";
+  r.sampler.method = s.sampler_kind == SamplerKind::poles && !s.passive
+                         ? "nested sampling; the pole runs with the box correction draw from the live points' "
+                           "bounding ellipsoid while they form one cluster and the draws cost fewer calls, the other "
+                           "steps are slices along whitened random directions"
+                         : "nested sampling, slice steps along whitened random directions";
   r.sampler.dlogz = s.sampler.dlogz;
   r.sampler.max_iterations = s.sampler.max_iterations;
   r.sampler.missed_mode_retries = s.missed_mode_retries;
