@@ -246,7 +246,7 @@ int main(int argc, char** argv) {
   app.add_option("--recovery-samplers", rec_samplers, "order recovery: samplers (full, poles)")->capture_default_str();
   std::string design = "prior";
   app.add_option("--design", design, "order recovery: true models from the plausible prior, or restricted to "
-                                     "distinct terms (validation/order_recovery.hpp)")
+                                     "distinct terms (validation/order_recovery.hpp; too rare for Q2S3)")
       ->check(CLI::IsMember({"prior", "distinct"}))
       ->capture_default_str();
   app.add_option("--qmax", rec.qmax, "order recovery: fitted grid Q0-qmax")->capture_default_str();
@@ -303,6 +303,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     fmt::print(stderr, "validate_calibration: {}\n", e.what());
     return 2;
+  } catch (const InternalError& e) {  // e.g. a design whose truths the rejection cap cannot draw
+    fmt::print(stderr, "validate_calibration: {}\n", e.what());
+    return 3;
   }
   return 0;
 }

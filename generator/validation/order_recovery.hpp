@@ -41,7 +41,9 @@ enum class RecoveryDesign { prior, distinct };
 /// |θ_s|/(2α_s) ≥ kMinPairQuality, damping ratio ≤ ½, so that no real pole or pair of real poles mimics it),
 /// and every term's share ‖term‖/‖G‖ over the grid ≥ kMinTermShare (‖·‖ the 2-norm over the points). At the
 /// largest noise of the map (3 % of rms|G|, 150 points) a term of that share stands kMinTermShare·√N/0.03 ≈
-/// 41 σ above the noise. Invariant under the label symmetries.
+/// 41 σ above the noise. Invariant under the label symmetries. Rejection from the tube grid's plausible prior
+/// needs ~35 draws per Q0S1 truth, ~5·10⁴ per Q0S3 or Q2S2, ~2.6·10⁵ per Q1S3 and ~5·10⁶ per Q2S3 (one of
+/// three seeds within simulate's cap of 10⁷), so the distinct map leaves Q2S3 out.
 constexpr double kDistinctRatio = 1.5;
 constexpr double kMinPairQuality = 1.0;
 constexpr double kMinTermShare = 0.1;
