@@ -65,9 +65,10 @@ FixedCoefficients quantise(const DiscreteModel& model, Format format);
 
 /// Replaces every pole of `model` (ε of a real term; e_r, p_i, g of a pair, and the λ, α, β they imply) by
 /// the value `format` stores: rounded to float for f32, the mantissa and term exponent quantise() chooses
-/// for q31/q15. The numerators are left alone. quantise() of the result stores the same poles again (the
-/// values are exactly representable at the term's exponent or finer); `admitgen check` reads what is
-/// written in any case.
+/// for q31/q15. The numerators are left alone. quantise() of the result stores the same poles again: the
+/// values are exactly representable at the term's exponent, and only a mantissa sum within rounding of the
+/// exponent's limit could make it choose a coarser one (the test of a narrow q15 pair checks the integers;
+/// `admitgen check` reads what is written in any case).
 void store_poles(DiscreteModel& model, Format format);
 
 }  // namespace admitgen::codegen
