@@ -108,8 +108,8 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
   // First the refit to the exact discrete poles, at rising margins; where rounding the poles themselves
   // breaks every certificate (a narrow pair whose stored pole moves its resonance), the refit to the poles
   // as stored (docs/passivity.md, "Refit to the stored poles").
+  // (Without enforcement the first candidate is returned as it is.)
   for (bool stored : {false, true}) {
-    if (stored && !settings.enforce_passivity) break;
     settings.refit_to_stored_poles = stored;
     for (double margin : kMargins) {
       settings.passive_margin = margin;

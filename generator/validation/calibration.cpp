@@ -67,7 +67,7 @@ bool plausible(const Order& order, const double* theta, const Eigen::ArrayXd& om
 }
 
 Simulation simulate(const Order& order, const Grid& grid, double noise_lo, double noise_hi, const PriorRanges& ranges,
-                    std::uint64_t seed, const std::function<bool(const double*)>& accept) {
+                    std::uint64_t seed, const SimulationFilter& accept) {
   ADMITGEN_ENSURE(noise_lo > 0.0 && noise_hi >= noise_lo, "noise range [{}, {}]", noise_lo, noise_hi);
   Simulation sim;
   sim.order = order;
@@ -84,7 +84,7 @@ Simulation simulate(const Order& order, const Grid& grid, double noise_lo, doubl
     for (Eigen::Index k = 0; k < u.size(); ++k) u[k] = rng.uniform();
     prior(u.data(), theta.data());
     ++sim.prior_draws;
-  } while (!plausible(order, theta.data(), omega) || (accept && !accept(theta.data())));
+  } while (!plausible(order, theta.data(), omega) || (accept && !accept(theta.data(), omega)));
   fold_to_reduced(order, theta.data());
   sim.theta = theta;
   Eigen::ArrayXd re, im;

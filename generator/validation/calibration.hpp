@@ -78,11 +78,11 @@ struct Simulation {
 
 /// θ from the prior `ranges` restricted to R (rejection, at most 10^7 draws: InternalError beyond), c
 /// log-uniform on [noise_lo, noise_hi] (noise_lo = noise_hi: fixed), data on `grid`; all from `seed`.
-/// `accept`, when given, restricts R further (a predicate of θ, unfolded; it must be invariant under the
-/// label symmetries too).
+/// `accept`, when given, restricts R further (a predicate of θ, unfolded, and of the grid's ω; it must be
+/// invariant under the label symmetries too).
+using SimulationFilter = std::function<bool(const double* theta, const Eigen::ArrayXd& omega)>;
 Simulation simulate(const Order& order, const Grid& grid, double noise_lo, double noise_hi,
-                    const PriorRanges& ranges, std::uint64_t seed,
-                    const std::function<bool(const double*)>& accept = {});
+                    const PriorRanges& ranges, std::uint64_t seed, const SimulationFilter& accept = {});
 
 /// Posterior weights of the run's points under the generating model (see the file comment): the run's
 /// weights × 1_R(θ_i) × P(σ ∈ [noise_lo, noise_hi]·r(θ_i)/√2 | θ_i, D); normalised (sum 1). The run's θ

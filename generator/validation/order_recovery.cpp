@@ -65,11 +65,10 @@ RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind k
   // Streams above those of run_sbc's replicates, so a recovery data set is never an SBC one.
   const std::uint64_t seed = derive_seed(settings.seed, 1'000'000u + static_cast<std::uint64_t>(index));
   const PriorRanges priors = band_priors(settings.grid, settings.base_priors);
-  const Eigen::ArrayXd grid_omega = 2.0 * EIGEN_PI * settings.grid.f_hz();
-  const auto distinct = [&](const double* th) { return distinct_terms(truth, th, grid_omega); };
-  const Simulation sim = settings.design == RecoveryDesign::distinct
-                             ? simulate(truth, settings.grid, noise, noise, priors, seed, distinct)
-                             : simulate(truth, settings.grid, noise, noise, priors, seed);
+  SimulationFilter accept;
+  if (settings.design == RecoveryDesign::distinct)
+    accept = [&truth](const double* th, const Eigen::ArrayXd& omega) { return distinct_terms(truth, th, omega); };
+  const Simulation sim = simulate(truth, settings.grid, noise, noise, priors, seed, accept);
 
   FitSettings fit;
   fit.qmax = settings.qmax;
