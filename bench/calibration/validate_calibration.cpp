@@ -11,6 +11,7 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/progress.hpp"
+#include "data/csv_writer.hpp"
 #include "validation/calibration.hpp"
 #include "validation/order_recovery.hpp"
 
@@ -140,6 +141,17 @@ std::string recovery_cases_csv(const std::vector<RecoveryCase>& cases) {
   return s;
 }
 
+/// Every order's evidence per case and sampler: attributes a miss to the selected order's ln Z or the truth's.
+std::string recovery_evidence_csv(const std::vector<RecoveryCase>& cases) {
+  std::string s = "case,sampler,truth,noise,selected,order,log_z,log_z_error,max_log_l,log_l_truth,run_sampler,live\n";
+  for (const auto& c : cases)
+    for (const auto& e : c.evidence)
+      s += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", c.index, c.sampler, c.truth.name(), g(c.noise),
+                       c.selected.name(), e.order.name(), g(e.log_z), g(e.log_z_error), g(e.max_log_l),
+                       g(c.log_l_truth), e.sampler, e.live);
+  return s;
+}
+
 std::string confusion_csv(const std::vector<RecoveryCase>& cases) {
   std::map<std::tuple<std::string, int, std::string, std::string>, int> counts;
   for (const auto& c : cases) ++counts[{c.sampler, c.identifiable ? 1 : 0, c.truth.name(), c.selected.name()}];
@@ -249,6 +261,9 @@ int main(int argc, char** argv) {
                                      "distinct terms (validation/order_recovery.hpp; too rare for Q2S3)")
       ->check(CLI::IsMember({"prior", "distinct"}))
       ->capture_default_str();
+  std::string case_list;
+  app.add_option("--cases", case_list, "order recovery: only these data sets (indices as in order_cases.csv; the "
+                                       "other options must be those of the run that listed them)");
   app.add_option("--qmax", rec.qmax, "order recovery: fitted grid Q0-qmax")->capture_default_str();
   app.add_option("--smax", rec.smax, "order recovery: fitted grid S0-smax")->capture_default_str();
   app.add_option("--seed", seed, "seed of the whole run")->capture_default_str();
@@ -261,6 +276,16 @@ int main(int argc, char** argv) {
     rec.samplers = parse_samplers(rec_samplers);
     rec.truths = parse_orders(truths);
     rec.design = design == "distinct" ? RecoveryDesign::distinct : RecoveryDesign::prior;
+    for (const auto& item : split(case_list)) {
+      std::size_t used = 0;
+      int index = -1;
+      try {
+        index = std::stoi(item, &used);
+      } catch (const std::exception&) {
+      }
+      if (index < 0 || used != item.size()) throw InputError(fmt::format("--cases: '{}' is not a data set index", item));
+      rec.cases.push_back(index);
+    }
     rec.noise.clear();
     for (const auto& n : split(noise)) rec.noise.push_back(std::stod(n));
     if ((sbc.draws + 1) % 40 != 0 || bins < 2 || (sbc.draws + 1) % bins != 0)
@@ -287,7 +312,10 @@ int main(int argc, char** argv) {
     }
     if (rec.per_cell > 0) {
       std::atomic<int> done{0};
-      const auto total = rec.truths.size() * rec.noise.size() * static_cast<std::size_t>(rec.per_cell) * rec.samplers.size();
+      const auto total =
+          (rec.cases.empty() ? rec.truths.size() * rec.noise.size() * static_cast<std::size_t>(rec.per_cell)
+                             : rec.cases.size()) *
+          rec.samplers.size();
       const auto cases = run_recovery(rec, [&](const RecoveryCase& c) {
         progress.update(fmt::format("order recovery {}/{} ({} {})", ++done, total, c.truth.name(), c.sampler));
       });
@@ -296,6 +324,17 @@ int main(int argc, char** argv) {
       if (!out_dir.empty()) {
         write_file_atomically(out_dir + "/order_cases.csv", recovery_cases_csv(cases));
         write_file_atomically(out_dir + "/order_confusion.csv", confusion_csv(cases));
+        write_file_atomically(out_dir + "/order_evidence.csv", recovery_evidence_csv(cases));
+        // Each data set as `admitgen fit` reads it, to re-run a case with other settings.
+        for (const auto& c : cases)
+          if (c.sampler == cases.front().sampler)
+            write_admittance_csv(fmt::format("{}/order_data_{}.csv", out_dir, c.index), c.data.f_hz, c.data.y,
+                                 {{"made by", "validate_calibration order recovery"},
+                                  {"case", std::to_string(c.index)},
+                                  {"seed", std::to_string(rec.seed)},
+                                  {"truth", c.truth.name()},
+                                  {"noise", g(c.noise)},
+                                  {"design", design}});
       }
     }
     fmt::print(stderr, "wall time {:.1f} s\n",

@@ -93,7 +93,8 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
   sub->add_option("--threads,-j", s.threads, "Worker threads over orders (0 = all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024))->capture_default_str();
   add_parsed_option(*sub, "--select", s.rule, SelectionRule::parse,
-                    "Selection rule: best | cheapest:DB (fewest buffers within DB deciban of the best)")
+                    "Selection rule: simplest:DB (fewest buffers among the orders not below the best by more than DB deciban "
+                    "plus two errors), cheapest:DB (the same without the errors) or best (highest evidence)")
       ->default_str(s.rule.spelling());
   sub->add_option_function<std::string>(
       "--priors",

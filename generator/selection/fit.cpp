@@ -7,6 +7,7 @@
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
 #include "selection/grid_growth.hpp"
+#include "selection/reduced_model.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace admitgen {
@@ -246,22 +248,56 @@ std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, dou
           (worst == models.size() || m.run.max_log_likelihood > models[worst].run.max_log_likelihood))
         worst = small;
     }
-    if (worst != models.size()) missed.push_back({big, worst});
+    if (worst != models.size()) missed.push_back({big, worst, models[worst].run.max_log_likelihood, false});
   }
   return missed;
 }
 
-std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance) {
+std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
+                                     const std::vector<ModelResult>& models, double tolerance) {
+  std::vector<MissedMode> missed = missed_modes(models, tolerance);
+  if (settings.passive) return missed;
+  for (std::size_t small = 0; small < models.size(); ++small) {
+    const ModelResult& m = models[small];
+    if (std::any_of(missed.begin(), missed.end(), [&](const MissedMode& x) { return x.order == small; })) continue;
+    if (m.run.size() == 0) continue;
+    // The run's own best with its residues refitted the same way, so that only better poles count.
+    const double own = std::max(m.run.max_log_likelihood,
+                                reduced_log_likelihood(data, m.order, m.order, m.run.point(max_likelihood_index(m.run)),
+                                                       settings.priors, settings.data_count));
+    std::optional<MissedMode> worst;
+    for (std::size_t big = 0; big < models.size(); ++big) {
+      const ModelResult& b = models[big];
+      if (b.order == m.order || b.order.q() < m.order.q() || b.order.s() < m.order.s() || b.run.size() == 0) continue;
+      const double log_l = reduced_log_likelihood(data, m.order, b.order, b.run.point(max_likelihood_index(b.run)),
+                                                  settings.priors, settings.data_count);
+      if (log_l > own + tolerance && (!worst || log_l > worst->reference_log_l))
+        worst = MissedMode{small, big, log_l, true};
+    }
+    if (worst) missed.push_back(*worst);
+  }
+  std::sort(missed.begin(), missed.end(), [](const MissedMode& x, const MissedMode& y) { return x.order < y.order; });
+  return missed;
+}
+
+std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models,
+                                              const std::vector<MissedMode>& missed) {
   std::vector<std::string> warnings;
-  for (const MissedMode& m : missed_modes(models, tolerance)) {
-    const ModelResult &big = models[m.order], &small = models[m.contained];
+  for (const MissedMode& m : missed) {
+    const ModelResult &run = models[m.order], &shown = models[m.contained];
     warnings.push_back(fmt::format(
-        "{}: best ln L {:.1f} is below {:.1f} of the nested order {}; the sampler missed a mode of {}, whose ln Z is "
+        "{}: best ln L {:.1f} is below {:.1f} {} {}; the sampler missed a mode of {}, whose ln Z is "
         "underestimated (rerun with more live points, {})",
-        big.order.name(), big.run.max_log_likelihood, small.run.max_log_likelihood, small.order.name(),
-        big.order.name(), setting("sampler.live")));
+        run.order.name(), run.run.max_log_likelihood, m.reference_log_l,
+        m.larger ? "reached by the best model of the larger order" : "of the nested order", shown.order.name(),
+        run.order.name(), setting("sampler.live")));
+    if (m.larger) warnings.back() += fmt::format(" with its surplus terms dropped");
   }
   return warnings;
+}
+
+std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance) {
+  return missed_mode_warnings(models, missed_modes(models, tolerance));
 }
 
 std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
@@ -304,7 +340,7 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
                         std::vector<ModelResult>& results, std::vector<int>& rounds, Progress& progress) {
   for (int round = 1; round <= settings.missed_mode_retries; ++round) {
     std::vector<std::size_t> which;
-    for (const MissedMode& m : missed_modes(results))
+    for (const MissedMode& m : missed_modes(data, settings, results))
       if (rounds[m.order] < round) which.push_back(m.order);
     if (which.empty()) continue;
     progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
@@ -322,13 +358,14 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
 }
 
 std::size_t select_order(const FitSettings& settings, const std::vector<ModelResult>& results) {
-  std::vector<double> log_z;
+  std::vector<double> log_z, error;
   std::vector<int> buffers;
   for (const auto& m : results) {
     log_z.push_back(m.run.log_z);
+    error.push_back(m.run.log_z_error);
     buffers.push_back(m.order.buffers());
   }
-  return settings.rule.select(log_z, buffers);
+  return settings.rule.select(log_z, error, buffers);
 }
 
 /// Grows the grid while the selected order lies on its edge (selection/grid_growth.hpp): runs the added orders
@@ -403,7 +440,7 @@ FitResult complete_fit(const Measurement& data, const FitSettings& settings, std
   fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_calls, progress);
   fit.selected = select_order(settings, results);
   fit.models = std::move(results);
-  fit.warnings = missed_mode_warnings(fit.models);
+  fit.warnings = missed_mode_warnings(fit.models, missed_modes(data, settings, fit.models));
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
   for (auto& m : fit.models)
     m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),

@@ -37,7 +37,7 @@ struct FitSettings {
   std::string priors_origin = "table1";  ///< "table1" or the prior file's path
   bool reduce_symmetry = true;
   DataCount data_count = DataCount::two_per_point;
-  SelectionRule rule = SelectionRule::best();
+  SelectionRule rule = SelectionRule::simplest(10.0);  // selection/selection_rule.hpp: Occam among orders the evidence cannot tell apart
   int threads = 0;  ///< 0 = hardware concurrency
   /// Rounds of re-running orders flagged by missed_mode_warnings, each with twice the live points of
   /// the previous round (a narrow mode with prior-volume fraction f at the contour where it starts to
@@ -112,13 +112,25 @@ struct FitResult {
 /// Order (Q', S') contains (Q, S) when Q' ≥ Q and S' ≥ S (zero residues reproduce the smaller
 /// model), so its best likelihood can never be lower. When a run's max ln L falls more than
 /// `tolerance` nats below that of an order it contains, that run missed the better mode: the
-/// evidence of that order is an underestimate. Returns one readable warning per such order.
+/// evidence of that order is an underestimate. Conversely, when the best θ of an order that contains it,
+/// with the surplus terms dropped and the residues refitted (selection/reduced_model.hpp), beats a run's
+/// max ln L by more than `tolerance`, that run missed the mode the larger order found.
 struct MissedMode {
   std::size_t order;      ///< index into models: the run that missed a mode
-  std::size_t contained;  ///< index of the contained order with the higher best likelihood
+  std::size_t contained;  ///< index of the order that shows it (contained in it, or containing it if `larger`)
+  double reference_log_l = 0.0;  ///< the ln L that order shows is reachable
+  bool larger = false;
 };
+/// Both checks; the second needs the data and the priors (skipped for `passive` fits, whose likelihood
+/// also needs the reduced model passive).
+std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
+                                     const std::vector<ModelResult>& models, double tolerance = 2.0);
+/// The check by contained orders alone.
 std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, double tolerance = 2.0);
-/// The readable form of missed_modes, one warning per order.
+/// The readable form of a missed_modes result, one warning per order.
+std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models,
+                                              const std::vector<MissedMode>& missed);
+/// missed_mode_warnings of the check by contained orders alone.
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance = 2.0);
 
 /// Seed of the run for `order`, derived from the user seed (independent of grid and thread count).

@@ -5,6 +5,7 @@
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "core/rng.hpp"
+#include "inference/likelihood.hpp"
 #include "inference/posterior.hpp"
 #include "model/multipole.hpp"
 
@@ -89,7 +90,12 @@ RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind k
   c.sampler = kind == SamplerKind::full ? "full" : "poles";
   c.selected = result.models[result.selected].order;
   c.extra_terms = (c.selected.q() + c.selected.s()) - (truth.q() + truth.s());
-  for (const auto& m : result.models) c.fallbacks += !m.sampler_note.empty() && kind == SamplerKind::poles;
+  for (const auto& m : result.models) {
+    c.fallbacks += !m.sampler_note.empty() && kind == SamplerKind::poles;
+    c.evidence.push_back({m.order, m.run.log_z, m.run.log_z_error, m.run.max_log_likelihood, m.sampler, m.live});
+  }
+  c.log_l_truth = Likelihood(sim.data, truth, DataCount::two_per_point)(sim.theta.data());
+  c.data = sim.data;
 
   const Eigen::ArrayXd omega = sim.data.omega();
   const Eigen::ArrayXcd g_true = evaluate_multipole(truth, sim.theta, omega);
@@ -122,12 +128,18 @@ std::vector<RecoveryCase> run_recovery(const RecoverySettings& settings,
     ADMITGEN_ENSURE(t.q() <= settings.qmax && t.s() <= settings.smax && t.q() + t.s() >= 1,
                     "true order {} outside the fitted grid or without a term", t.name());
   const std::size_t n_samplers = settings.samplers.size();
-  const std::size_t sets = settings.truths.size() * settings.noise.size() * static_cast<std::size_t>(settings.per_cell);
-  std::vector<RecoveryCase> out(sets * n_samplers);
+  const int sets = static_cast<int>(settings.truths.size() * settings.noise.size()) * settings.per_cell;
+  std::vector<int> indices = settings.cases;
+  if (indices.empty())
+    for (int i = 0; i < sets; ++i) indices.push_back(i);
+  for (int i : indices)
+    if (i < 0 || i >= sets)
+      throw InputError(fmt::format("order recovery: data set {} does not exist (this design has 0-{})", i, sets - 1));
+  std::vector<RecoveryCase> out(indices.size() * n_samplers);
   std::vector<std::size_t> queue(out.size());
   for (std::size_t t = 0; t < queue.size(); ++t) queue[t] = t;
   run_in_parallel(queue, settings.threads, [&](std::size_t t) {
-    const int index = static_cast<int>(t / n_samplers);
+    const int index = indices[t / n_samplers];
     try {
       out[t] = run_case(settings, index, settings.samplers[t % n_samplers]);
     } catch (const InternalError& e) {  // name the data set, so that it can be run alone

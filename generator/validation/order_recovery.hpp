@@ -61,9 +61,22 @@ struct RecoverySettings {
   std::uint64_t seed = 1;
   int threads = 0;
   PriorRanges base_priors = PriorRanges::table1();  ///< clipped to the band by band_priors, for truths and fits
+  /// Data set indices to run (empty: all). Index i = (truth t, noise k, replicate r) with
+  /// i = (t·|noise| + k)·per_cell + r; its seed depends on i and the seed only, so one set can be re-run alone.
+  std::vector<int> cases;
 
   /// Orders Q ∈ [q0, q1] × S ∈ [s0, s1], Q-major.
   static std::vector<Order> order_range(int q0, int q1, int s0, int s1);
+};
+
+/// One order's fit of a recovery data set: what decides the selection, so that a miss can be attributed
+/// (an over-complete order's evidence too high, or the truth's too low).
+struct OrderEvidence {
+  Order order{0, 0};
+  double log_z = 0.0, log_z_error = 0.0;
+  double max_log_l = 0.0;  ///< best ln L the run found
+  std::string sampler;     ///< ModelResult::sampler ("poles_box_mass_sampled", ...)
+  int live = 0;            ///< live points of the run kept (more after a missed-mode re-run)
 };
 
 struct RecoveryCase {
@@ -79,6 +92,9 @@ struct RecoveryCase {
   bool identifiable = false;
   int extra_terms = 0;       ///< (Q + S) selected − (Q + S) true
   int fallbacks = 0;         ///< orders the pole sampler re-ran with the box mass sampled (selection/fit.hpp)
+  std::vector<OrderEvidence> evidence;  ///< every order of the fitted grid, grid order
+  double log_l_truth = 0.0;  ///< ln L of the true θ (the fit's likelihood, data_count two per point)
+  Measurement data;          ///< the simulated data set
 };
 
 /// Whether `order` competes with `truth` (see the file comment): it cannot represent the truth and has no

@@ -19,14 +19,32 @@ TEST_CASE("selection: best evidence vs cheapest within a margin (the paper's Q1S
   // Q1S1 (3 buffers) is 3.1 dB below Q0S2 (4 buffers); Q3S3 (9 buffers) is 1 dB above Q0S2.
   const double ln10 = std::log(10.0);
   const std::vector<double> log_z{0.0, -0.31 * ln10, 0.1 * ln10, -5.0 * ln10};
+  const std::vector<double> errors(4, 0.0);
   const std::vector<int> buffers{4, 3, 9, 2};
-  CHECK(SelectionRule::parse("best").select(log_z, buffers) == 2);
-  CHECK(SelectionRule::parse("cheapest:5").select(log_z, buffers) == 1);   // Q1S1 within 4.1 dB of the best
-  CHECK(SelectionRule::parse("cheapest:60").select(log_z, buffers) == 3);  // everything within 60 dB: 2 buffers
-  CHECK(SelectionRule::parse("cheapest:0").select(log_z, buffers) == 2);
+  CHECK(SelectionRule::parse("best").select(log_z, errors, buffers) == 2);
+  CHECK(SelectionRule::parse("cheapest:5").select(log_z, errors, buffers) == 1);   // Q1S1 within 4.1 dB of the best
+  CHECK(SelectionRule::parse("cheapest:60").select(log_z, errors, buffers) == 3);  // everything within 60 dB: 2 buffers
+  CHECK(SelectionRule::parse("cheapest:0").select(log_z, errors, buffers) == 2);
   CHECK_THROWS_AS(SelectionRule::parse("cheapest:-1"), InputError);
   CHECK_THROWS_AS(SelectionRule::parse("cheapest"), InputError);
   CHECK_THROWS_AS(SelectionRule::parse("worst"), InputError);
+  CHECK_THROWS_AS(SelectionRule::parse("simplest:x"), InputError);
+}
+
+TEST_CASE("selection: simplest within a margin plus two errors of the difference") {
+  // Best: index 2 (9 buffers) at 0. Index 0 (4 buffers) 2.5 nats below (10.9 dB), index 1 (3 buffers) 3.9 nats
+  // below (16.9 dB), index 3 (2 buffers) 30 nats below.
+  const std::vector<double> log_z{-2.5, -3.9, 0.0, -30.0};
+  const std::vector<int> buffers{4, 3, 9, 2};
+  // Exact evidence: simplest:10 allows ln 10 = 2.303 nats, so neither 0 nor 1 qualifies: the best.
+  CHECK(SelectionRule::parse("simplest:10").select(log_z, {0.0, 0.0, 0.0, 0.0}, buffers) == 2);
+  // Errors 0.1 each: 2.303 + 2·√0.02 = 2.586 nats: index 0 qualifies (2.5), index 1 (3.9) does not.
+  CHECK(SelectionRule::parse("simplest:10").select(log_z, {0.1, 0.1, 0.1, 0.1}, buffers) == 0);
+  // Errors 0.6: 2.303 + 2·√0.72 = 4.00 nats: index 1 qualifies; index 3 never.
+  CHECK(SelectionRule::parse("simplest:10").select(log_z, {0.6, 0.6, 0.6, 0.6}, buffers) == 1);
+  // cheapest:10 ignores the errors.
+  CHECK(SelectionRule::parse("cheapest:10").select(log_z, {0.6, 0.6, 0.6, 0.6}, buffers) == 2);
+  CHECK(SelectionRule::parse("simplest:10").spelling() == "simplest:10");
 }
 
 TEST_CASE("missed-mode check: a containing order with a lower best likelihood is flagged") {

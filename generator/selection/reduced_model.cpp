@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+#include "selection/reduced_model.hpp"
+
+#include "core/errors.hpp"
+#include "inference/box_least_squares.hpp"
+#include "inference/pole_space.hpp"
+#include "inference/residue_marginal.hpp"
+
+#include <bitset>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace admitgen {
+
+namespace {
+
+/// Every subset of {0, …, n − 1} with k members, as bit masks (n ≤ Order::kMaxPoles).
+std::vector<unsigned> subsets(int n, int k) {
+  std::vector<unsigned> out;
+  for (unsigned mask = 0; mask < (1u << n); ++mask)
+    if (static_cast<int>(std::bitset<32>(mask).count()) == k) out.push_back(mask);
+  return out;
+}
+
+}  // namespace
+
+double reduced_log_likelihood(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
+                              const PriorRanges& priors, DataCount count) {
+  ADMITGEN_ENSURE(small.q() <= big.q() && small.s() <= big.s(), "{} is not contained in {}",
+                  small.name(), big.name());
+  const ResidueMarginal marginal(data, small, count, priors);
+  const Likelihood likelihood(data, small, count);
+  const Eigen::VectorXd& lo = marginal.box_lo();
+  const Eigen::VectorXd& hi = marginal.box_hi();
+  std::vector<double> poles(static_cast<std::size_t>(pole_count(small)));
+  std::vector<double> theta(static_cast<std::size_t>(small.dim()));
+  double best = -std::numeric_limits<double>::infinity();
+  for (unsigned real : subsets(big.q(), small.q()))
+    for (unsigned pairs : subsets(big.s(), small.s())) {
+      // ψ of the smaller order (inference/pole_space.hpp packing): the kept λ, then the kept (α, β).
+      std::size_t k = 0;
+      for (int q = 0; q < big.q(); ++q)
+        if (real & (1u << q)) poles[k++] = theta_big[Order::lambda(q)];
+      for (int s = 0; s < big.s(); ++s)
+        if (pairs & (1u << s)) {
+          poles[k++] = theta_big[big.alpha(s)];
+          poles[k++] = theta_big[big.beta(s)];
+        }
+      const ResidueConditional& c = marginal.untruncated(poles.data());
+      if (!c.valid) continue;
+      // min over the box of (r − r̂)ᵀM(r − r̂), in Jacobi-scaled coordinates y = D⁻¹r (M̃ = DMD): the residues
+      // of the columns differ by orders of magnitude (docs/method.md, "Residues given the poles").
+      const Eigen::VectorXd& d = c.scale;
+      const Eigen::MatrixXd m_scaled = d.asDiagonal() * c.m * d.asDiagonal();
+      const Eigen::VectorXd y = box_least_squares(m_scaled, c.mean.cwiseQuotient(d), lo.cwiseQuotient(d),
+                                                  hi.cwiseQuotient(d));
+      const Eigen::VectorXd r = (y.cwiseProduct(d)).cwiseMax(lo).cwiseMin(hi);
+      assemble_theta(small, poles.data(), r, theta.data());
+      const double log_l = likelihood(theta.data());
+      if (std::isfinite(log_l) && log_l > best) best = log_l;
+    }
+  return best;
+}
+
+}  // namespace admitgen

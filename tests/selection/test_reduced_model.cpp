@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+// A larger order's best model read as a smaller one (selection/reduced_model.hpp) and the missed-mode check
+// it feeds (selection/fit.hpp missed_modes), against least squares solved here from the model's formula.
+#include "inference/likelihood.hpp"
+#include "inference/synthetic_data.hpp"
+#include "selection/fit.hpp"
+#include "selection/reduced_model.hpp"
+
+#include <doctest/doctest.h>
+
+#include <Eigen/QR>
+
+#include <cmath>
+#include <complex>
+#include <vector>
+
+using namespace admitgen;
+
+namespace {
+
+using cd = std::complex<double>;
+
+// Q1S1 truth: G∞, A, λ, B, C, α, β (s⁻¹).
+Eigen::VectorXd truth() {
+  Eigen::VectorXd t(7);
+  t << 0.5, -20000.0, 8000.0, 2000.0, -200.0, 1500.0, 10000.0;
+  return t;
+}
+
+// Q2S1 with the truth's poles plus a spurious real pole at 3000 s⁻¹ (first), residues deliberately wrong:
+// the reduction must keep poles only.
+Eigen::VectorXd larger() {
+  Eigen::VectorXd t(9);
+  t << 0.1, 5000.0, 3000.0, -1.0, 8000.0, 7.0, 7.0, 1500.0, 10000.0;
+  return t;
+}
+
+struct LeastSquares {
+  Eigen::VectorXd theta;  // Q1S1 packing
+  double log_l;
+};
+
+// The Q1S1 least-squares residues for real pole λ and pair α + jβ, straight from G = G∞ + A/(λ + jω) +
+// Θ/(θ + jω) + Θ*/(θ* + jω) (Θ = B + jC, θ = α + jβ), with A optionally held at `fixed_a` (its column moved to
+// the data side), solved by column-pivoting QR: independent of the project's basis and normal equations.
+LeastSquares least_squares(const Measurement& data, double lambda, double alpha, double beta, const double* fixed_a) {
+  const Eigen::ArrayXd w = data.omega();
+  const Eigen::Index n = data.size();
+  const bool free_a = fixed_a == nullptr;
+  Eigen::MatrixXd a(2 * n, free_a ? 4 : 3);
+  Eigen::VectorXd b(2 * n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const cd jw(0.0, w[i]), th(alpha, beta);
+    std::vector<cd> cols{1.0, 1.0 / (lambda + jw), 1.0 / (th + jw) + 1.0 / (std::conj(th) + jw),
+                         cd(0.0, 1.0) / (th + jw) - cd(0.0, 1.0) / (std::conj(th) + jw)};
+    cd rhs = data.y[i];
+    if (!free_a) {
+      rhs -= *fixed_a * cols[1];
+      cols.erase(cols.begin() + 1);
+    }
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      a(i, static_cast<Eigen::Index>(k)) = cols[k].real();
+      a(n + i, static_cast<Eigen::Index>(k)) = cols[k].imag();
+    }
+    b[i] = rhs.real();
+    b[n + i] = rhs.imag();
+  }
+  const Eigen::VectorXd r = a.colPivHouseholderQr().solve(b);
+  Eigen::VectorXd theta(7);
+  if (free_a) theta << r[0], r[1], lambda, r[2], r[3], alpha, beta;
+  else theta << r[0], *fixed_a, lambda, r[1], r[2], alpha, beta;
+  return {theta, Likelihood(data, Order(1, 1), DataCount::two_per_point)(theta.data())};
+}
+
+}  // namespace
+
+TEST_CASE("reduced model: dropping a surplus real pole gives the least-squares likelihood of the poles kept") {
+  const Measurement data = test::synthetic(Order(1, 1), truth(), 150, 100.0, 4000.0, 0.01, 20261127);
+  const PriorRanges priors = PriorRanges::table1();
+  const Eigen::VectorXd big = larger();
+  // The two ways of dropping one of the two real poles; the better is the truth's λ.
+  const LeastSquares keep_truth = least_squares(data, 8000.0, 1500.0, 10000.0, nullptr);
+  const LeastSquares keep_spurious = least_squares(data, 3000.0, 1500.0, 10000.0, nullptr);
+  REQUIRE(keep_truth.log_l > keep_spurious.log_l + 100.0);
+  // The residues lie inside Table 1's box, so the box-constrained minimum is the unconstrained one. Both
+  // solutions are backward stable: their residuals differ by O(ε cond(A)) ≈ 1e-16 · 1e5 relative, and ln L =
+  // −(K/2) ln S (K = 300) is stationary in r at the minimum, so 1e-7 nats bounds the difference with room.
+  CHECK(std::abs(keep_truth.theta[1]) < 40000.0);
+  const double reduced =
+      reduced_log_likelihood(data, Order(1, 1), Order(2, 1), big.data(), priors, DataCount::two_per_point);
+  CHECK(std::abs(reduced - keep_truth.log_l) < 1e-7);
+  // It can only beat the true θ (least squares minimises S at those poles), by about half a χ²₄.
+  const double at_truth = Likelihood(data, Order(1, 1), DataCount::two_per_point)(truth().data());
+  CHECK(reduced >= at_truth);
+  CHECK(reduced < at_truth + 15.0);
+  // small = big: the run's own θ with its residues refitted.
+  const Eigen::VectorXd own = truth();
+  CHECK(std::abs(reduced_log_likelihood(data, Order(1, 1), Order(1, 1), own.data(), priors, DataCount::two_per_point) -
+                 keep_truth.log_l) < 1e-7);
+}
+
+TEST_CASE("reduced model: a residue held at its prior bound, the others refitted") {
+  const Measurement data = test::synthetic(Order(1, 1), truth(), 150, 100.0, 4000.0, 0.01, 20261128);
+  PriorRanges priors = PriorRanges::table1();
+  priors.a = {-17000.0, 17000.0};  // the truth's A = −20 000 lies outside: the minimum sits on A = −17 000
+  const Eigen::VectorXd big = larger();
+  const double a_bound = -17000.0;
+  const LeastSquares reference = least_squares(data, 8000.0, 1500.0, 10000.0, &a_bound);
+  // S is a convex quadratic whose free minimum has A below the bound, so over the half-space A ≥ −17 000 its
+  // minimum lies on A = −17 000 (the reference); the reference's other residues lie inside their boxes, so it
+  // is the minimum over the box too.
+  REQUIRE(least_squares(data, 8000.0, 1500.0, 10000.0, nullptr).theta[1] < a_bound);
+  CHECK(std::abs(reference.theta[0]) < 1.0);
+  CHECK(std::abs(reference.theta[3]) < 10000.0);
+  CHECK(std::abs(reference.theta[4]) < 1000.0);
+  // Tolerance as above; the active-set solver stops at a relative KKT tolerance of 1e-12.
+  const double reduced =
+      reduced_log_likelihood(data, Order(1, 1), Order(2, 1), big.data(), priors, DataCount::two_per_point);
+  CHECK(std::abs(reduced - reference.log_l) < 1e-6);
+}
+
+TEST_CASE("missed modes: a smaller order below what the larger order's best shows is flagged for a re-run") {
+  const Measurement data = test::synthetic(Order(1, 1), truth(), 150, 100.0, 4000.0, 0.01, 20261127);
+  FitSettings settings;
+  const auto one_point_run = [&](const Order& order, const Eigen::VectorXd& theta) {
+    ModelResult m{order, {}, 0, 0.0, {}, {}};
+    m.run.dim = order.dim();
+    m.run.samples.assign(theta.data(), theta.data() + theta.size());
+    m.run.log_likelihood = {Likelihood(data, order, settings.data_count)(theta.data())};
+    m.run.log_weight = {0.0};
+    m.run.max_log_likelihood = m.run.log_likelihood[0];
+    return m;
+  };
+  // The Q1S1 run stuck in a poor mode (its real pole at 2000 s⁻¹, residues refitted: its own best).
+  Eigen::VectorXd poor = least_squares(data, 2000.0, 1500.0, 10000.0, nullptr).theta;
+  // Q2S1 at the truth's least squares plus a spurious pole that carries nothing (A = 0).
+  const Eigen::VectorXd ls = least_squares(data, 8000.0, 1500.0, 10000.0, nullptr).theta;
+  Eigen::VectorXd big(9);
+  big << ls[0], 0.0, 3000.0, ls[1], ls[2], ls[3], ls[4], ls[5], ls[6];
+  const std::vector<ModelResult> models{one_point_run(Order(1, 1), poor), one_point_run(Order(2, 1), big)};
+  REQUIRE(models[1].run.max_log_likelihood > models[0].run.max_log_likelihood + 100.0);
+  // The check by contained orders sees nothing (Q2S1 is the better one); the check by larger orders does.
+  CHECK(missed_modes(models).empty());
+  const auto missed = missed_modes(data, settings, models);
+  REQUIRE(missed.size() == 1);
+  CHECK(missed[0].order == 0);
+  CHECK(missed[0].contained == 1);
+  CHECK(missed[0].larger);
+  CHECK(missed[0].reference_log_l ==
+        doctest::Approx(least_squares(data, 8000.0, 1500.0, 10000.0, nullptr).log_l).epsilon(1e-12));
+  const auto warnings = missed_mode_warnings(models, missed);
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].rfind("Q1S1:", 0) == 0);
+  CHECK(warnings[0].find("larger order Q2S1") != std::string::npos);
+  // With the Q1S1 run at the truth's poles nothing is missed.
+  const std::vector<ModelResult> fine{one_point_run(Order(1, 1), ls), models[1]};
+  CHECK(missed_modes(data, settings, fine).empty());
+}
