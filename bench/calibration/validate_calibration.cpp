@@ -167,9 +167,9 @@ void print_recovery(const RecoverySettings& st, const std::vector<RecoveryCase>&
   std::string truths;
   for (const auto& t : st.truths) truths += (truths.empty() ? "" : ",") + t.name();
   fmt::print("Order recovery: truths {}, noise {} of rms|G|, {} data sets per cell, grid {} ({} pts), fitted "
-             "Q0-{} x S0-{}, {} live points, rule best, seed {}, design {}\n",
+             "Q0-{} x S0-{}, {} live points, rule {}, seed {}, design {}\n",
              truths, noise,
-             st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.seed,
+             st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.rule.spelling(), st.seed,
              st.design == RecoveryDesign::distinct
                  ? fmt::format("distinct (natural frequencies a factor >= {:g} apart, pair quality >= {:g}, every term "
                                ">= {:g} of ||G||)",
@@ -261,6 +261,8 @@ int main(int argc, char** argv) {
                                      "distinct terms (validation/order_recovery.hpp; too rare for Q2S3)")
       ->check(CLI::IsMember({"prior", "distinct"}))
       ->capture_default_str();
+  std::string select = rec.rule.spelling();
+  app.add_option("--select", select, "order recovery: selection rule, as fit's --select")->capture_default_str();
   std::string case_list;
   app.add_option("--cases", case_list, "order recovery: only these data sets (indices as in order_cases.csv; the "
                                        "other options must be those of the run that listed them)");
@@ -286,6 +288,7 @@ int main(int argc, char** argv) {
       if (index < 0 || used != item.size()) throw InputError(fmt::format("--cases: '{}' is not a data set index", item));
       rec.cases.push_back(index);
     }
+    rec.rule = SelectionRule::parse(select);
     rec.noise.clear();
     for (const auto& n : split(noise)) rec.noise.push_back(std::stod(n));
     if ((sbc.draws + 1) % 40 != 0 || bins < 2 || (sbc.draws + 1) % bins != 0)

@@ -79,6 +79,7 @@ RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind k
   fit.sampler.live = settings.live;
   fit.sampler.seed = derive_seed(seed, 1);
   fit.sampler_kind = kind;
+  fit.rule = settings.rule;
   fit.threads = 1;
   Progress quiet(false);
   const FitResult result = run_fit(sim.data, fit, quiet);

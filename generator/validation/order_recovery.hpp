@@ -57,6 +57,7 @@ struct RecoverySettings {
   int qmax = 3, smax = 3;    ///< the fitted grid
   int live = 100;
   std::vector<SamplerKind> samplers{SamplerKind::full};
+  SelectionRule rule = FitSettings{}.rule;  ///< the fit's default unless set
   RecoveryDesign design = RecoveryDesign::prior;
   std::uint64_t seed = 1;
   int threads = 0;
