@@ -286,12 +286,11 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
   for (const MissedMode& m : missed) {
     const ModelResult &run = models[m.order], &shown = models[m.contained];
     warnings.push_back(fmt::format(
-        "{}: best ln L {:.1f} is below {:.1f} {} {}; the sampler missed a mode of {}, whose ln Z is "
+        "{}: best ln L {:.1f} is below {:.1f} {} {}{}; the sampler missed a mode of {}, whose ln Z is "
         "underestimated (rerun with more live points, {})",
         run.order.name(), run.run.max_log_likelihood, m.reference_log_l,
         m.larger ? "reached by the best model of the larger order" : "of the nested order", shown.order.name(),
-        run.order.name(), setting("sampler.live")));
-    if (m.larger) warnings.back() += fmt::format(" with its surplus terms dropped");
+        m.larger ? " with its surplus terms dropped" : "", run.order.name(), setting("sampler.live")));
   }
   return warnings;
 }
