@@ -37,7 +37,7 @@ struct FitSettings {
   std::string priors_origin = "table1";  ///< "table1" or the prior file's path
   bool reduce_symmetry = true;
   DataCount data_count = DataCount::two_per_point;
-  SelectionRule rule = SelectionRule::simplest(10.0);  // selection/selection_rule.hpp: Occam among orders the evidence cannot tell apart
+  SelectionRule rule = SelectionRule::simplest(10.0);  ///< Occam among the orders the evidence cannot tell apart (selection_rule.hpp)
   int threads = 0;  ///< 0 = hardware concurrency
   /// Rounds of re-running orders flagged by missed_mode_warnings, each with twice the live points of
   /// the previous round (a narrow mode with prior-volume fraction f at the contour where it starts to
