@@ -30,10 +30,10 @@ std::size_t SelectionRule::select(const std::vector<double>& log_z, const std::v
   if (kind_ == Kind::best) return top;
   std::size_t pick = top;
   for (std::size_t i = 0; i < log_z.size(); ++i) {
-    // Below the best by more than the margin (in nats), plus, for simplest, two errors of the difference.
-    double allowed = margin_db_ * std::log(10.0) / 10.0;
-    if (kind_ == Kind::simplest) allowed += kSimplestErrors * std::hypot(log_z_error[i], log_z_error[top]);
-    if (log_z[i] < log_z[top] - allowed) continue;
+    // Below the best by more than the margin, plus, for simplest, two errors of the difference (deciban).
+    const double allowed_db =
+        margin_db_ + (kind_ == Kind::simplest ? kSimplestErrors * deciban_error(log_z_error[i], log_z_error[top]) : 0.0);
+    if (deciban(log_z[i], log_z[top]) < -allowed_db) continue;
     if (buffers[i] < buffers[pick] || (buffers[i] == buffers[pick] && log_z[i] > log_z[pick])) pick = i;
   }
   return pick;
