@@ -74,10 +74,8 @@ BoxMassSimulator::BoxMassSimulator(const ResidueConditional& c, const Eigen::Vec
   // (y − ŷ)ᵀM̃(y − ŷ). Zero (plain GHK, bit for bit) when r̂ lies in the box.
   tilt_ = Eigen::VectorXd::Zero(p);
   if (!in_residue_box(c.mean, lo, hi)) {
-    const Eigen::MatrixXd m_scaled = c.chol * c.chol.transpose();  // M̃
     const Eigen::VectorXd mean_scaled = c.mean.cwiseQuotient(c.scale);
-    const Eigen::VectorXd y_star =
-        box_least_squares(m_scaled, mean_scaled, lo.cwiseQuotient(c.scale), hi.cwiseQuotient(c.scale));
+    const Eigen::VectorXd y_star = scaled_box_minimiser(c, lo, hi);
     for (Eigen::Index i = 0; i < p; ++i) {
       const Eigen::Index k = order_[static_cast<std::size_t>(i)];
       tilt_[i] = y_star[k] - mean_scaled[k];
@@ -133,6 +131,12 @@ double chi_square_quantile(double nu, double u) { return 2.0 * boost::math::gamm
 
 bool in_residue_box(const Eigen::VectorXd& r, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
   return (r.array() >= lo.array()).all() && (r.array() <= hi.array()).all();
+}
+
+Eigen::VectorXd scaled_box_minimiser(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+  const Eigen::MatrixXd m_scaled = c.chol * c.chol.transpose();  // M̃
+  return box_least_squares(m_scaled, c.mean.cwiseQuotient(c.scale), lo.cwiseQuotient(c.scale),
+                           hi.cwiseQuotient(c.scale));
 }
 
 Eigen::VectorXd untruncated_residue_draw(const ResidueConditional& c, Rng& rng) {

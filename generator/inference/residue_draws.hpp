@@ -69,6 +69,10 @@ double chi_square_quantile(double nu, double u);
 /// Whether r lies in the box [lo, hi].
 bool in_residue_box(const Eigen::VectorXd& r, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
 
+/// The minimiser y* of (y − ŷ)ᵀM̃(y − ŷ) over the box [lo, hi] in Jacobi-scaled coordinates y = D⁻¹r
+/// (M̃ = L̃L̃ᵀ, ŷ = D⁻¹r̂; inference/box_least_squares.hpp): the residues of best fit inside the prior box are D y*.
+Eigen::VectorXd scaled_box_minimiser(const ResidueConditional& c, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
+
 /// Draws r ~ t_ν(r̂, S_min/ν · M⁻¹) restricted to [lo, hi].
 ///
 /// Rejection: r = r̂ + √(S_min/W) D L̃⁻ᵀ z, z ~ N(0, I_p), W ~ χ²_ν (then Cov = M⁻¹ S_min/(ν − 2)),

@@ -2,8 +2,8 @@
 #include "selection/reduced_model.hpp"
 
 #include "core/errors.hpp"
-#include "inference/box_least_squares.hpp"
 #include "inference/pole_space.hpp"
+#include "inference/residue_draws.hpp"
 #include "inference/residue_marginal.hpp"
 
 #include <bitset>
@@ -49,13 +49,9 @@ double reduced_log_likelihood(const Measurement& data, const Order& small, const
         }
       const ResidueConditional& c = marginal.untruncated(poles.data());
       if (!c.valid) continue;
-      // min over the box of (r − r̂)ᵀM(r − r̂), in Jacobi-scaled coordinates y = D⁻¹r (M̃ = DMD): the residues
-      // of the columns differ by orders of magnitude (docs/method.md, "Residues given the poles").
-      const Eigen::VectorXd& d = c.scale;
-      const Eigen::MatrixXd m_scaled = d.asDiagonal() * c.m * d.asDiagonal();
-      const Eigen::VectorXd y = box_least_squares(m_scaled, c.mean.cwiseQuotient(d), lo.cwiseQuotient(d),
-                                                  hi.cwiseQuotient(d));
-      const Eigen::VectorXd r = (y.cwiseProduct(d)).cwiseMax(lo).cwiseMin(hi);
+      // min over the box of (r − r̂)ᵀM(r − r̂), solved in Jacobi-scaled coordinates (the residues of the columns
+      // differ by orders of magnitude; docs/method.md, "Residues given the poles").
+      const Eigen::VectorXd r = scaled_box_minimiser(c, lo, hi).cwiseProduct(c.scale).cwiseMax(lo).cwiseMin(hi);
       assemble_theta(small, poles.data(), r, theta.data());
       const double log_l = likelihood(theta.data());
       if (std::isfinite(log_l) && log_l > best) best = log_l;
