@@ -241,7 +241,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Simulation-based calibration and order recovery of the admitgen fit (docs/validation.md)"};
   SbcSettings sbc;
   RecoverySettings rec;
-  std::string samplers = "full,poles", orders = "Q1S1,Q0S2,Q0S1,Q1S2", rec_samplers = "full", out_dir;
+  std::string samplers = "poles", orders = "Q1S1,Q0S2,Q0S1,Q1S2", rec_samplers = "poles", out_dir;
   std::string truths = "Q0S1,Q0S2,Q0S3,Q1S1,Q1S2,Q1S3,Q2S1,Q2S2,Q2S3", noise = "0.003,0.01,0.03";
   int bins = 10, threads = 0, live = 100;
   std::uint64_t seed = 1;
@@ -256,6 +256,11 @@ int main(int argc, char** argv) {
   app.add_option("--truths", truths, "order recovery: true orders")->capture_default_str();
   app.add_option("--noise", noise, "order recovery: noise levels (complex std / rms|G|)")->capture_default_str();
   app.add_option("--recovery-samplers", rec_samplers, "order recovery: samplers (full, poles)")->capture_default_str();
+  std::string prior = "band";
+  app.add_option("--prior", prior, "prior of truths and fits: band (fit's default, Gaussian residues) or table1 (the seed "
+                                   "paper's uniform box clipped to the band; run it with --samplers full)")
+      ->check(CLI::IsMember({"band", "table1"}))
+      ->capture_default_str();
   std::string design = "prior";
   app.add_option("--design", design, "order recovery: true models from the plausible prior, or restricted to "
                                      "distinct terms (validation/order_recovery.hpp; too rare for Q2S3)")
@@ -273,6 +278,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_dir, "directory for the CSV files");
   CLI11_PARSE(app, argc, argv);
   try {
+    if (prior == "table1") sbc.base_priors = rec.base_priors = PriorRanges::table1();
     sbc.samplers = parse_samplers(samplers);
     sbc.orders = parse_orders(orders);
     rec.samplers = parse_samplers(rec_samplers);

@@ -96,13 +96,29 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                     "Selection rule: simplest:DB (fewest buffers among the orders not below the best by more than DB deciban "
                     "plus two errors), cheapest:DB (the same without the errors) or best (highest evidence)")
       ->default_str(s.rule.spelling());
-  sub->add_option_function<std::string>(
-      "--priors",
-      [&s](const std::string& path) {
-        s.priors = io::read_priors_file(path);
-        s.priors_origin = path;
+  auto* prior = sub->add_option_function<std::string>(
+      "--prior",
+      [&s](const std::string& kind) {
+        const double scale = s.priors.admittance_scale;
+        s.priors = kind == "table1" ? PriorRanges::table1() : PriorRanges::band(FitSettings::kTwoPiTimes4kHz, scale);
+        s.priors_origin = kind;
       },
-      "JSON prior ranges overriding Table 1, e.g. {\"lambda\": [0, 2e5]}");
+      "band (default): Gaussian residues scaled to their poles, pole ranges scaled to the data's band; table1: the "
+      "seed paper's uniform box over every parameter (run by the full sampler)")
+      ->check(CLI::IsMember({"band", "table1"}))->default_str("band");
+  sub->add_option_function<double>(
+         "--admittance-scale", [&s](double scale) { s.priors.admittance_scale = scale; },
+         "Prior standard deviation of each term's contribution to the normalised admittance (band prior)")
+      ->check(CLI::PositiveNumber)->default_str(fmt::format("{}", kDefaultAdmittanceScale));
+  sub->add_option_function<std::string>(
+         "--priors",
+         [&s](const std::string& path) {
+           s.priors = io::read_priors_file(path);
+           s.priors_origin = path;
+         },
+         "JSON prior ranges overriding Table 1's, e.g. {\"lambda\": [0, 2e5]} (uniform residues, run by the full "
+         "sampler); with \"residues\": \"gaussian\" only pole ranges and \"admittance_scale\" (docs/method.md)")
+      ->excludes(prior);
   add_parsed_option(*sub, "--likelihood-k", s.data_count, parse_data_count,
                     "Real data per complex point: 2N (default) or N (the paper's)")
       ->check(CLI::IsMember({"2N", "N"}))->default_str(s.data_count == DataCount::two_per_point ? "2N" : "N");
@@ -125,9 +141,8 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                 "Sample only passive models (Re G >= 0 at every frequency): evidence and posterior under the prior "
                 "truncated to passive models");
   add_parsed_option(*sub, "--sampler", s.sampler_kind, parse_sampler_kind,
-                    "full (default): sample every parameter (--passive always does); poles: sample the poles, "
-                    "integrate the residues analytically (an order whose residue box cannot be corrected for "
-                    "afterwards is re-run with the box mass sampled; fit.json says which ran)")
+                    "poles (default): sample the poles, integrate residues and noise exactly (band prior); full: "
+                    "sample every parameter (what --prior table1, --priors and --passive run)")
       ->check(CLI::IsMember({"poles", "full"}))->default_str(s.sampler_kind == SamplerKind::full ? "full" : "poles");
 }
 

@@ -3,6 +3,8 @@
 
 #include "core/errors.hpp"
 
+#include <boost/math/special_functions/erf.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,7 +30,40 @@ void sort_real_poles(const Order& order, double* v) {
   }
 }
 
+bool is_residue(Family f) { return f == Family::g_inf || f == Family::a || f == Family::b || f == Family::c; }
+
+/// Φ⁻¹(u), the standard normal quantile; u is kept inside (0, 1) so that θ stays finite.
+double normal_quantile(double u) {
+  const double v = std::clamp(u, 1e-300, 1.0 - 0x1.0p-53);
+  return -std::sqrt(2.0) * boost::math::erfc_inv(2.0 * v);
+}
+
 }  // namespace
+
+PriorRanges PriorRanges::band(double omega_max, double admittance_scale) {
+  if (!(std::isfinite(omega_max) && omega_max > 0.0))
+    throw InputError(fmt::format("band priors need a positive highest frequency, got omega_max = {}", omega_max));
+  PriorRanges p;
+  p.lambda = {0.0, kBandPoleFactor * omega_max};
+  p.alpha = {0.0, kBandPoleFactor * omega_max};
+  p.beta = {-kBandResonanceFactor * omega_max, kBandResonanceFactor * omega_max};
+  p.residues = ResiduePrior::gaussian;
+  p.admittance_scale = admittance_scale;
+  return p;
+}
+
+void gaussian_residue_scales(const Order& order, const double* poles, double admittance_scale, double* sd) {
+  // Docs/method.md, "The Gaussian residue prior": G∞ itself, A_q/(λ_q + jω) at ω = 0, and a pair's
+  // (B + jC)/(α + j(ω − β)) at its resonance ω = β are each of size s.
+  int k = 0;
+  sd[k++] = admittance_scale;
+  for (int q = 0; q < order.q(); ++q) sd[k++] = admittance_scale * poles[q];
+  for (int s = 0; s < order.s(); ++s) {
+    const double alpha = poles[order.q() + 2 * s];
+    sd[k++] = admittance_scale * alpha;
+    sd[k++] = admittance_scale * alpha;
+  }
+}
 
 const Range& PriorRanges::of(Family f) const { return const_cast<PriorRanges*>(this)->of(f); }
 
@@ -46,7 +81,11 @@ Range& PriorRanges::of(Family f) {
 }
 
 void PriorRanges::validate(const std::string& origin) const {
+  if (residues == ResiduePrior::gaussian && !(std::isfinite(admittance_scale) && admittance_scale > 0.0))
+    throw InputError(fmt::format("{}: the admittance scale of the Gaussian residue prior is {}; need a finite value > 0",
+                                 origin, admittance_scale));
   for (const auto& [family, key] : kFamilyKeys) {
+    if (residues == ResiduePrior::gaussian && is_residue(family)) continue;
     const Range& r = of(family);
     if (!(std::isfinite(r.lo) && std::isfinite(r.hi) && r.lo < r.hi))
       throw InputError(fmt::format("{}: prior range of {} is [{}, {}]; need finite lo < hi", origin, key, r.lo, r.hi));
@@ -64,14 +103,16 @@ Range* PriorRanges::find(const std::string& key) {
 
 std::vector<std::pair<std::string, Range>> PriorRanges::named() const {
   std::vector<std::pair<std::string, Range>> out;
-  for (const auto& [family, key] : kFamilyKeys) out.emplace_back(key, of(family));
+  for (const auto& [family, key] : kFamilyKeys)
+    if (residues == ResiduePrior::uniform || !is_residue(family)) out.emplace_back(key, of(family));
   return out;
 }
 
 PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bool reduce_symmetry)
     : order_(order), ranges_(ranges), reduced_(reduce_symmetry) {
   ranges_.validate("priors");
-  if (reduced_ && order.s() > 0 && (ranges_.beta.lo != -ranges_.beta.hi || ranges_.c.lo != -ranges_.c.hi))
+  const bool c_symmetric = ranges_.residues == ResiduePrior::gaussian || ranges_.c.lo == -ranges_.c.hi;
+  if (reduced_ && order.s() > 0 && (ranges_.beta.lo != -ranges_.beta.hi || !c_symmetric))
     throw InputError("symmetry reduction needs beta and C prior ranges symmetric about 0; "
                      "make them symmetric or pass " + setting("reduce_symmetry = false"));
 }
@@ -79,8 +120,18 @@ PriorTransform::PriorTransform(const Order& order, const PriorRanges& ranges, bo
 void PriorTransform::operator()(const double* u, double* theta) const {
   const auto families = order_.families();
   for (std::size_t k = 0; k < families.size(); ++k) {
+    if (ranges_.residues == ResiduePrior::gaussian && is_residue(families[k])) continue;
     const Range& r = ranges_.of(families[k]);
     theta[k] = r.lo + r.width() * u[k];
+  }
+  if (ranges_.residues == ResiduePrior::uniform) return;
+  const double s = ranges_.admittance_scale;
+  theta[Order::g_inf()] = s * normal_quantile(u[Order::g_inf()]);
+  for (int q = 0; q < order_.q(); ++q) theta[Order::a(q)] = s * theta[Order::lambda(q)] * normal_quantile(u[Order::a(q)]);
+  for (int p = 0; p < order_.s(); ++p) {
+    const double sd = s * theta[order_.alpha(p)];
+    theta[order_.b(p)] = sd * normal_quantile(u[order_.b(p)]);
+    theta[order_.c(p)] = sd * normal_quantile(u[order_.c(p)]);
   }
 }
 

@@ -41,14 +41,16 @@ Json input_json(const FitInput& in) {
 Json settings_json(const FitSettingsRecord& s) {
   Json ranges = Json::object();
   for (const auto& [key, range] : s.prior_ranges) ranges[key] = range;
+  Json priors{{"source", s.priors_source}, {"symmetry_reduced", s.symmetry_reduced}};
+  if (s.residue_prior) priors["residues"] = *s.residue_prior;
+  priors["ranges"] = ranges;
   Json sampler{{"method", s.sampler.method}, {"dlogz", s.sampler.dlogz}, {"max_iterations", s.sampler.max_iterations}};
   if (s.sampler.missed_mode_retries) sampler["missed_mode_retries"] = *s.sampler.missed_mode_retries;
   sampler["slices"] = s.sampler.slices ? Json(*s.sampler.slices) : Json("3 + dim");
   if (s.sampler.residues) sampler["residues"] = *s.sampler.residues;
-  if (s.sampler.truncation_tolerance_nats) sampler["truncation_tolerance_nats"] = *s.sampler.truncation_tolerance_nats;
   Json j{{"live", s.live},
          {"seed", s.seed},
-         {"priors", {{"source", s.priors_source}, {"symmetry_reduced", s.symmetry_reduced}, {"ranges", ranges}}},
+         {"priors", priors},
          {"likelihood", s.likelihood},
          {"select", s.select},
          {"qmax", s.qmax},
@@ -99,12 +101,6 @@ Json model_json(const FitModel& m) {
                             {"max_abs_delta_alpha", m.goodness_of_fit->max_abs_delta_alpha}};
   if (m.sampler) j["sampler"] = *m.sampler;
   if (m.sampler_note) j["sampler_note"] = plain_settings(*m.sampler_note);
-  if (m.truncation) {
-    j["truncation_correction_nats"] = m.truncation->correction_nats;
-    j["truncation_correction_error_nats"] = m.truncation->correction_error_nats;
-    j["reweighted_ess_ratio"] = m.truncation->reweighted_ess_ratio;
-    j["residue_draws_gibbs_weight"] = m.truncation->residue_draws_gibbs_weight;
-  }
   return j;
 }
 
@@ -164,7 +160,7 @@ FitSamplerSettings read_sampler_settings(const Field& f) {
     s.slices = slices.integer();
   }
   if (auto v = o.optional("residues")) s.residues = v->text();
-  if (auto v = o.optional("truncation_tolerance_nats")) s.truncation_tolerance_nats = v->number();
+  o.optional("truncation_tolerance_nats");  // written by versions with the residue box's correction; ignored
   o.finish();
   return s;
 }
@@ -178,6 +174,7 @@ FitSettingsRecord read_settings(const Field& f) {
     ObjectReader priors(o.required("priors"));
     s.priors_source = priors.required("source").text();
     s.symmetry_reduced = priors.required("symmetry_reduced").boolean();
+    if (auto v = priors.optional("residues")) s.residue_prior = v->text();
     for (const auto& [key, range] : ObjectReader(priors.required("ranges")).members())
       s.prior_ranges.emplace_back(key, range.number_pair());
     priors.finish();
@@ -254,14 +251,10 @@ FitModel read_model(const Field& f) {
   }
   if (auto v = o.optional("sampler")) m.sampler = v->text();
   if (auto v = o.optional("sampler_note")) m.sampler_note = v->text();
-  if (auto v = o.optional("truncation_correction_nats")) {
-    FitTruncation t;
-    t.correction_nats = v->number();
-    t.correction_error_nats = o.required("truncation_correction_error_nats").number();
-    t.reweighted_ess_ratio = o.required("reweighted_ess_ratio").number();
-    t.residue_draws_gibbs_weight = o.required("residue_draws_gibbs_weight").number();
-    m.truncation = t;
-  }
+  // Written by versions with the residue box's correction (docs/formats.md); read and ignored.
+  for (const char* key : {"truncation_correction_nats", "truncation_correction_error_nats", "reweighted_ess_ratio",
+                          "residue_draws_gibbs_weight"})
+    o.optional(key);
   o.finish();
   return m;
 }

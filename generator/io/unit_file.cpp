@@ -14,7 +14,7 @@
 namespace admitgen::io {
 namespace {
 
-constexpr const char* kSchema = "admitgen.unit/1";
+constexpr const char* kSchema = "admitgen.unit/2";
 
 /// One line of free text (newlines would break the line structure; none of the texts written holds one).
 std::string one_line(std::string s) {
@@ -92,10 +92,6 @@ std::string unit_text(const UnitResult& u) {
   put(out, "seconds", m.seconds);
   put(out, "sampler", m.sampler);
   put(out, "sampler_note", m.sampler_note);
-  put(out, "truncation_correction", m.truncation_correction);
-  put(out, "truncation_correction_error", m.truncation_correction_error);
-  put(out, "reweighted_ess_ratio", m.reweighted_ess_ratio);
-  put(out, "gibbs_weight", m.gibbs_weight);
   put(out, "dim", static_cast<long>(r.dim));
   put(out, "log_z", r.log_z);
   put(out, "log_z_error", r.log_z_error);
@@ -128,10 +124,6 @@ UnitResult read_unit_file(const std::string& path) {
   m.seconds = in.number("seconds");
   m.sampler = in.text("sampler");
   m.sampler_note = in.text("sampler_note");
-  m.truncation_correction = in.number("truncation_correction");
-  m.truncation_correction_error = in.number("truncation_correction_error");
-  m.reweighted_ess_ratio = in.number("reweighted_ess_ratio");
-  m.gibbs_weight = in.number("gibbs_weight");
   NestedRun& r = m.run;
   r.dim = static_cast<int>(in.integer("dim"));
   if (r.dim != m.order.dim()) in.fail(fmt::format("dim is not that of {}", m.order.name()), std::to_string(r.dim));

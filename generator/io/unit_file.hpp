@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// The result file of one library work unit (docs/library.md, "Work units"): one order's first-round run of a
-/// fit (selection/fit.hpp, run_first_round), schema "admitgen.unit/1", plus the key of the inputs it was
+/// fit (selection/fit.hpp, run_first_round), schema "admitgen.unit/2", plus the key of the inputs it was
 /// computed from. Every number is written as a C99 hexadecimal float, so a unit read back is the run bit for
 /// bit (a merge from unit files equals the fit that ran them in one process). Its one writer and one reader.
 #pragma once

@@ -44,13 +44,13 @@ struct FitSamplerSettings {
   std::optional<std::int64_t> missed_mode_retries;  ///< absent in older fits
   std::optional<std::int64_t> slices;               ///< empty: automatic ("3 + dim")
   std::optional<std::string> residues;              ///< absent in older fits
-  std::optional<double> truncation_tolerance_nats;  ///< absent in older fits
 };
 
 struct FitSettingsRecord {
   std::int64_t live = 0;
   std::uint64_t seed = 0;
   std::string priors_source;
+  std::optional<std::string> residue_prior;  ///< absent in older fits (then: uniform over the ranges)
   bool symmetry_reduced = false;
   /// Prior range per family, in file order (G_inf, A, lambda, B, C, alpha, beta).
   std::vector<std::pair<std::string, std::array<double, 2>>> prior_ranges;
@@ -87,12 +87,6 @@ struct FitGoodness {
   double relative_rms_residual = 0.0, max_abs_delta_alpha = 0.0;
 };
 
-/// The pole sampler's corrections (present when the order did not run the full sampler).
-struct FitTruncation {
-  double correction_nats = 0.0, correction_error_nats = 0.0, reweighted_ess_ratio = 0.0,
-         residue_draws_gibbs_weight = 0.0;
-};
-
 /// One fitted order.
 struct FitModel {
   std::string order;
@@ -108,7 +102,6 @@ struct FitModel {
   std::optional<FitGoodness> goodness_of_fit;          ///< absent in older fits
   std::optional<std::string> sampler;                  ///< absent in older fits
   std::optional<std::string> sampler_note;  ///< may name settings (core/errors.hpp, setting())
-  std::optional<FitTruncation> truncation;
 };
 
 /// Median and 95 % band of the selected order's posterior predictive.

@@ -72,83 +72,45 @@ ModelResult run_full(const Measurement& data, const Order& order, const FitSetti
 }
 
 ModelResult run_poles(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress, int round, BoxMassMethod box_mass) {
+                      const NestedProgressFn& progress, int round) {
   const NestedSettings sampler = order_sampler_settings(order, settings, round);
-  PolesRun poles = run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
-                                     sampler, derive_seed(sampler.seed, 0x7e51dULL), progress, box_mass);
-  ModelResult result{order, std::move(poles.run), sampler.live, 0.0, {}};
-  result.sampler = poles.box_mass == BoxMassMethod::sampled ? "poles_box_mass_sampled" : "poles_analytic_residues";
-  result.truncation_correction = poles.truncation_correction;
-  result.truncation_correction_error = poles.truncation_correction_error;
-  result.reweighted_ess_ratio = poles.reweighted_ess_ratio;
-  result.gibbs_weight = poles.gibbs_weight;
+  ModelResult result{order,
+                     run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
+                                       sampler, derive_seed(sampler.seed, 0x7e51dULL), progress),
+                     sampler.live, 0.0, {}};
+  result.sampler = "poles_analytic_residues";
   return result;
 }
 
-/// The reweighting keeps at least this fraction of the effective sample size, or the order is re-run
-/// with the box mass sampled (docs/method.md, "Tolerance and fallback").
-constexpr double kMinEssRatio = 0.25;
+}  // namespace
 
-/// A pilot of the reweighted run at a tenth of the live points (at least 25; fits of 100 live points or
-/// more; docs/method.md, "The pilot run"): the effective-sample ratio measures how P̃/P_box varies over the
-/// posterior, not how many points sample it, so where the pilot keeps less than half the minimum the run
-/// would fail the rule too. Returns why the order goes straight to the box mass sampled, or "" (run the
-/// reweighted path); `calls` gets the pilot's likelihood calls.
-std::string pilot_refusal(const Measurement& data, const Order& order, const FitSettings& settings,
-                          const NestedProgressFn& progress, int round, long& calls) {
-  constexpr int kMinPilotLive = 25;
-  constexpr double kPilotEssRatio = 0.5 * kMinEssRatio;
-  calls = 0;
-  if (order.q() + order.s() == 0 || settings.sampler.live < 4 * kMinPilotLive) return "";
-  FitSettings pilot = settings;
-  pilot.sampler.live = std::max(kMinPilotLive, settings.sampler.live / 10);
-  pilot.sampler.seed = derive_seed(settings.sampler.seed, 0x9170dULL);
-  const ModelResult p = run_poles(data, order, pilot, progress, round, BoxMassMethod::reweighted);
-  calls = p.run.calls;
-  if (p.reweighted_ess_ratio >= kPilotEssRatio) return "";
-  return fmt::format(
-      "the residue box truncates the conditional posterior of the residues too much to correct (a pilot run at {} "
-      "live points kept an effective-sample ratio of {:.2f} after the box correction, less than half the minimum "
-      "{:.2f}): box mass sampled",
-      p.live, p.reweighted_ess_ratio, kMinEssRatio);
+SamplerKind order_sampler(const FitSettings& settings, std::string* note) {
+  if (settings.sampler_kind == SamplerKind::full) return SamplerKind::full;
+  std::string why;
+  if (settings.passive)
+    why = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
+  else if (settings.priors.residues == ResiduePrior::uniform)
+    why = "the uniform residue prior (" + settings.priors_origin + ") has no closed-form marginal: residues sampled";
+  if (why.empty()) return SamplerKind::poles;
+  if (note != nullptr) *note = why;
+  return SamplerKind::full;
 }
 
-}  // namespace
+FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
+  if (settings.priors_origin == "band")
+    settings.priors = PriorRanges::band(data.omega().maxCoeff(), settings.priors.admittance_scale);
+  return settings;
+}
 
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
                       const NestedProgressFn& progress, int round) {
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
-  ModelResult result{Order(0, 0), {}, 0, 0.0, {}};
-  if (settings.sampler_kind == SamplerKind::full) {
-    result = run_full(data, order, settings, progress, round);
-  } else if (settings.passive) {
-    // Passivity depends on the residues, which the pole sampler integrates over the whole box.
-    result = run_full(data, order, settings, progress, round);
-    result.sampler_note = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
-  } else {
-    long pilot_calls = 0;
-    const std::string pilot_note = pilot_refusal(data, order, settings, progress, round, pilot_calls);
-    if (!pilot_note.empty()) {
-      result = run_poles(data, order, settings, progress, round, BoxMassMethod::sampled);
-      result.sampler_note = pilot_note;
-    } else {
-      result = run_poles(data, order, settings, progress, round, BoxMassMethod::reweighted);
-    }
-    result.run.calls += pilot_calls;  // the pilot's calls were spent too
-    if (pilot_note.empty() && !(result.truncation_correction_error <= settings.truncation_tolerance &&
-                                result.reweighted_ess_ratio >= kMinEssRatio)) {
-      const std::string why = fmt::format(
-          "the residue box truncates the conditional posterior of the residues too much to correct (correction "
-          "{:.3g} ± {:.3g} nats, tolerance {:.3g}; effective-sample ratio {:.2f}, minimum {:.2f}): box mass sampled",
-          result.truncation_correction, result.truncation_correction_error, settings.truncation_tolerance,
-          result.reweighted_ess_ratio, kMinEssRatio);
-      const long first_calls = result.run.calls;
-      result = run_poles(data, order, settings, progress, round, BoxMassMethod::sampled);
-      result.run.calls += first_calls;  // the reweighted run's calls were spent too
-      result.sampler_note = why;
-    }
-  }
+  std::string note;
+  ModelResult result = order_sampler(settings, &note) == SamplerKind::poles
+                           ? run_poles(data, order, settings, progress, round)
+                           : run_full(data, order, settings, progress, round);
+  result.sampler_note = note;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.cpu_seconds = thread_cpu_seconds() - cpu_start;
   for (std::size_t i = 0; i < result.run.size(); ++i)
@@ -412,7 +374,8 @@ FitResult run_fit(const Measurement& data, const FitSettings& settings, Progress
   return complete_fit(data, settings, run_first_round(data, settings, progress), progress);
 }
 
-std::vector<ModelResult> run_first_round(const Measurement& data, const FitSettings& settings, Progress& progress) {
+std::vector<ModelResult> run_first_round(const Measurement& data, const FitSettings& given, Progress& progress) {
+  const FitSettings settings = with_band_priors(given, data);
   const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
   std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
@@ -422,8 +385,9 @@ std::vector<ModelResult> run_first_round(const Measurement& data, const FitSetti
   return results;
 }
 
-FitResult complete_fit(const Measurement& data, const FitSettings& settings, std::vector<ModelResult> results,
+FitResult complete_fit(const Measurement& data, const FitSettings& given, std::vector<ModelResult> results,
                        Progress& progress) {
+  const FitSettings settings = with_band_priors(given, data);
   std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
   if (results.size() != grid.size())

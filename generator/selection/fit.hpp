@@ -22,10 +22,10 @@
 
 namespace admitgen {
 
-/// How each order is sampled: `poles` integrates the residues out analytically and samples the poles
-/// only (inference/poles_sampler.hpp), falling back to `full` for an order where the residue box
-/// truncates the conditional posterior of r too much to be corrected (FitSettings::truncation_tolerance); `full` samples
-/// every parameter (docs/method.md).
+/// How each order is sampled: `poles` integrates the residues and the noise out exactly under the Gaussian
+/// residue prior and samples the poles only (inference/poles_sampler.hpp); `full` samples every parameter
+/// (docs/method.md, "Samplers"). The uniform residue prior (Table 1) and `passive` fits need `full`
+/// (order_sampler says which runs).
 enum class SamplerKind { poles, full };
 SamplerKind parse_sampler_kind(const std::string& text);  ///< "full" | "poles"
 
@@ -33,8 +33,12 @@ struct FitSettings {
   int qmax = 3;
   int smax = 3;
   NestedSettings sampler;  ///< live, dlogz, max_iterations, slices, seed (the user seed)
-  PriorRanges priors = PriorRanges::table1();
-  std::string priors_origin = "table1";  ///< "table1" or the prior file's path
+  /// The priors as used. With priors_origin "band" (the default) their pole ranges are those of
+  /// PriorRanges::band for the data's highest frequency, set by with_band_priors when the data are known;
+  /// until then, those of the seed paper's 4 kHz band.
+  PriorRanges priors = PriorRanges::band(kTwoPiTimes4kHz);
+  std::string priors_origin = "band";  ///< "band", "table1" or the prior file's path
+  static constexpr double kTwoPiTimes4kHz = 25132.741228718345;
   bool reduce_symmetry = true;
   DataCount data_count = DataCount::two_per_point;
   SelectionRule rule = SelectionRule::simplest(10.0);  ///< Occam among the orders the evidence cannot tell apart (selection_rule.hpp)
@@ -47,17 +51,9 @@ struct FitSettings {
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
   bool passive = false;
-  /// full by default: the pole sampler (which finds modes the full sampler misses, and whose posterior is
-  /// calibrated) still takes far longer where the residue box cuts the conditional posterior hard, e.g.
-  /// over 15 min against 2 for the bundled rect_10cm.csv over Q0-3 × S0-3 (docs/method.md, "Status of the
-  /// pole sampler"); `passive` needs the residues sampled in any case.
-  SamplerKind sampler_kind = SamplerKind::full;
-  /// The pole sampler's box correction (inference/poles_sampler.hpp) is accepted when its Monte Carlo
-  /// error is at most this (nats; a fraction of the sampling error √(H/n) ≈ 0.2-0.6 of the default
-  /// runs) and the reweighting keeps at least a quarter of the effective sample size (the sampling error
-  /// is then divided by √(ratio), inference/poles_sampler.hpp); otherwise the order is
-  /// re-run with the box mass sampled as coordinates (BoxMassMethod::sampled: exact, no correction).
-  double truncation_tolerance = 0.05;
+  /// poles by default: exact in the residues and the noise, calibrated, and seconds per grid
+  /// (docs/validation.md); order_sampler turns it into `full` where the priors or `passive` need it.
+  SamplerKind sampler_kind = SamplerKind::poles;
   /// How many real poles and how many pairs the grid may gain beyond qmax/smax when the selected order lies
   /// on its edge (selection/grid_growth.hpp; 0 keeps the grid as given).
   int grid_growth = 2;
@@ -71,16 +67,10 @@ struct ModelResult {
   std::vector<ParameterSummary> parameters;  ///< folded to the reduced form
   /// Poles of the best sample, residues refitted under Re G ≥ 0 (set by run_fit; what emit uses by default).
   passivity::PassiveEstimate passive{};
-  /// "poles_analytic_residues", "poles_box_mass_sampled" or "full" (fit.json per model "sampler").
+  /// "poles_analytic_residues" or "full" (fit.json per model "sampler").
   std::string sampler = "full";
   /// Why the full sampler ran when the pole sampler was asked for (empty otherwise).
   std::string sampler_note{};
-  /// Pole sampler only: the box correction of ln Z, its Monte Carlo error (nats), the effective-sample
-  /// ratio of the reweighting, and the posterior weight of residues drawn by the Gibbs fallback.
-  double truncation_correction = 0.0;
-  double truncation_correction_error = 0.0;
-  double reweighted_ess_ratio = 1.0;
-  double gibbs_weight = 0.0;
   double cpu_seconds = 0.0;  ///< CPU time of the thread that ran it (for benchmarks on a loaded machine; not stored)
 };
 
@@ -132,6 +122,15 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
                                               const std::vector<MissedMode>& missed);
 /// missed_mode_warnings of the check by contained orders alone.
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance = 2.0);
+
+/// The sampler an order of this fit runs, chosen here only: `settings.sampler_kind`, except that the
+/// uniform residue prior and `passive` fits need the residues sampled (`full`; `note` gets why, when the
+/// pole sampler was asked for).
+SamplerKind order_sampler(const FitSettings& settings, std::string* note = nullptr);
+
+/// `settings` with the band priors resolved for `data` (PriorRanges::band at its highest angular frequency,
+/// the admittance scale kept) when priors_origin is "band"; otherwise unchanged.
+FitSettings with_band_priors(FitSettings settings, const Measurement& data);
 
 /// Seed of the run for `order`, derived from the user seed (independent of grid and thread count).
 std::uint64_t order_seed(std::uint64_t user_seed, const Order& order);

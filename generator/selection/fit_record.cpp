@@ -38,6 +38,11 @@ FitInput input(const Measurement& data, const ReadOptions& read) {
 
 FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   FitSettingsRecord r;
+  r.residue_prior = s.priors.residues == ResiduePrior::gaussian
+                        ? fmt::format("gaussian, zero mean, admittance scale s = {}; standard deviations s for G_inf, "
+                                      "s*lambda_q for A_q, s*alpha_s for B_s and C_s",
+                                      s.priors.admittance_scale)
+                        : std::string("uniform over the ranges");
   r.live = s.sampler.live;
   r.seed = s.sampler.seed;
   r.priors_source = s.priors_origin;
@@ -47,8 +52,8 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.select = s.rule.describe();
   r.qmax = s.qmax;
   r.smax = s.smax;
-  r.sampler.method = s.sampler_kind == SamplerKind::poles && !s.passive
-                         ? "nested sampling; the pole runs with the box correction draw from the live points' "
+  r.sampler.method = order_sampler(s) == SamplerKind::poles
+                         ? "nested sampling of the poles; draws from the live points' "
                            "bounding ellipsoid while they form one cluster and the draws cost fewer calls, the other "
                            "steps are slices along whitened random directions"
                          : "nested sampling, slice steps along whitened random directions";
@@ -56,11 +61,10 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.sampler.max_iterations = s.sampler.max_iterations;
   r.sampler.missed_mode_retries = s.missed_mode_retries;
   if (s.sampler.slices > 0) r.sampler.slices = s.sampler.slices;
-  r.sampler.residues = s.sampler_kind == SamplerKind::poles
-                           ? "integrated analytically (poles sampled, box correction; box mass sampled where the "
-                             "correction is not accurate to the tolerance)"
+  r.sampler.residues = order_sampler(s) == SamplerKind::poles
+                           ? "integrated exactly with the noise (poles sampled; residues and noise drawn from their "
+                             "conditional)"
                            : "sampled";
-  r.sampler.truncation_tolerance_nats = s.truncation_tolerance;
   r.grid_growth = s.grid_growth;
   if (s.passive) r.passive = "prior truncated to passive models (Hamiltonian test); evidence under the renormalised prior";
   return r;
@@ -104,11 +108,8 @@ FitModel model_record(const ModelResult& m, const Measurement& data) {
   if (m.run.log_support_fraction != 0.0) r.log_passive_prior_fraction = m.run.log_support_fraction;
   const GoodnessOfFit g = goodness_of_fit(data, m);
   r.goodness_of_fit = FitGoodness{"max_likelihood", g.relative_rms, g.max_abs_delta_alpha};
-  r.sampler = m.sampler;  // "poles_analytic_residues" | "poles_box_mass_sampled" | "full" (selection/fit.hpp)
+  r.sampler = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
   if (!m.sampler_note.empty()) r.sampler_note = m.sampler_note;
-  if (m.sampler == "poles_analytic_residues")
-    r.truncation = FitTruncation{m.truncation_correction, m.truncation_correction_error, m.reweighted_ess_ratio,
-                                 m.gibbs_weight};
   return r;
 }
 
@@ -125,7 +126,8 @@ FitPredictive predictive_record(const PredictiveBand& b) {
 
 }  // namespace
 
-FitRecord fit_record(const Measurement& data, const ReadOptions& read, const FitSettings& settings, const FitResult& fit) {
+FitRecord fit_record(const Measurement& data, const ReadOptions& read, const FitSettings& given, const FitResult& fit) {
+  const FitSettings settings = with_band_priors(given, data);
   const ModelResult& chosen = fit.models[fit.selected];
   FitRecord r;
   r.version = kVersion;

@@ -2,9 +2,9 @@
 #include "selection/reduced_model.hpp"
 
 #include "core/errors.hpp"
+#include "inference/box_least_squares.hpp"
 #include "inference/pole_space.hpp"
-#include "inference/residue_draws.hpp"
-#include "inference/residue_marginal.hpp"
+#include "inference/residue_evidence.hpp"
 
 #include <bitset>
 #include <cmath>
@@ -29,10 +29,11 @@ double reduced_log_likelihood(const Measurement& data, const Order& small, const
                               const PriorRanges& priors, DataCount count) {
   ADMITGEN_ENSURE(small.q() <= big.q() && small.s() <= big.s(), "{} is not contained in {}",
                   small.name(), big.name());
-  const ResidueMarginal marginal(data, small, count, priors);
+  const ResidueEvidence evidence(data, small, count, 1.0);
   const Likelihood likelihood(data, small, count);
-  const Eigen::VectorXd& lo = marginal.box_lo();
-  const Eigen::VectorXd& hi = marginal.box_hi();
+  const bool boxed = priors.residues == ResiduePrior::uniform;
+  Eigen::VectorXd lo, hi;
+  residue_box(small, priors, lo, hi);
   std::vector<double> poles(static_cast<std::size_t>(pole_count(small)));
   std::vector<double> theta(static_cast<std::size_t>(small.dim()));
   double best = -std::numeric_limits<double>::infinity();
@@ -47,11 +48,18 @@ double reduced_log_likelihood(const Measurement& data, const Order& small, const
           poles[k++] = theta_big[big.alpha(s)];
           poles[k++] = theta_big[big.beta(s)];
         }
-      const ResidueConditional& c = marginal.untruncated(poles.data());
+      const ResiduePosterior& c = evidence.posterior(poles.data());
       if (!c.valid) continue;
-      // min over the box of (r − r̂)ᵀM(r − r̂), solved in Jacobi-scaled coordinates (the residues of the columns
-      // differ by orders of magnitude; docs/method.md, "Residues given the poles").
-      const Eigen::VectorXd r = scaled_box_minimiser(c, lo, hi).cwiseProduct(c.scale).cwiseMax(lo).cwiseMin(hi);
+      // The least-squares residues; under the uniform prior, min over its box of (r − r̂)ᵀM(r − r̂), solved in
+      // the coordinates of the Gaussian prior's scales, where M̃ = V diag(μ) Vᵀ is well scaled (the residues of the
+      // columns differ by orders of magnitude; docs/method.md, "Residues given the poles").
+      Eigen::VectorXd r = least_squares_residues(c);
+      if (boxed) {
+        const Eigen::VectorXd inv = c.sd.cwiseInverse();
+        const Eigen::MatrixXd m_scaled = c.v * c.mu.asDiagonal() * c.v.transpose();
+        r = box_least_squares(m_scaled, r.cwiseProduct(inv), lo.cwiseProduct(inv), hi.cwiseProduct(inv)).cwiseProduct(c.sd);
+        r = r.cwiseMax(lo).cwiseMin(hi);
+      }
       assemble_theta(small, poles.data(), r, theta.data());
       const double log_l = likelihood(theta.data());
       if (std::isfinite(log_l) && log_l > best) best = log_l;

@@ -19,7 +19,8 @@ namespace admitgen {
 
 /// The highest ln L of `small` over every way of dropping surplus terms of θ' (order `big`, which must
 /// contain `small`; θ' packed as model/order.hpp), the kept poles as they are and the residues (G∞
-/// included) the least-squares fit over the residue box of `priors` (inference/box_least_squares.hpp).
+/// included) the least-squares fit, over the residue box under the uniform prior of `priors`
+/// (inference/box_least_squares.hpp), unbounded under the Gaussian prior.
 /// With small = big, θ' with its residues refitted: the like-for-like reference for a run's own best
 /// (a sampled θ' need not hold the best residues of its poles). −∞ when no reduction gives a usable basis
 /// (numerically singular).

@@ -30,6 +30,7 @@ Grid tube_grid() { return {"100Hz-4kHz", 100.0, 4000.0, 150}; }
 Grid wide_grid() { return {"50Hz-10kHz", 50.0, 10000.0, 200}; }
 
 PriorRanges band_priors(const Grid& grid, const PriorRanges& base) {
+  if (base.residues == ResiduePrior::gaussian) return PriorRanges::band(kTwoPi * grid.f_hi_hz, base.admittance_scale);
   const double w_lo = kTwoPi * grid.f_lo_hz, w_hi = kTwoPi * grid.f_hi_hz;
   PriorRanges p = base;
   p.lambda = {std::max(base.lambda.lo, w_lo), std::min(base.lambda.hi, w_hi)};

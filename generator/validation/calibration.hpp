@@ -50,12 +50,17 @@ Grid tube_grid();
 /// A wide band: 50 Hz–10 kHz, 200 points.
 Grid wide_grid();
 
-/// The prior of the calibration runs on `grid`: Table 1 (`base`) with the pole ranges clipped to the band,
+/// The prior of the calibration runs on `grid`. Under the Gaussian residue prior (`base.residues`, the
+/// default) it is the fit's default for data on that grid, PriorRanges::band(ω_hi) with base's admittance scale:
+/// SBC then checks exactly what `fit` runs. Under the uniform prior it is Table 1 (`base`) with the pole ranges clipped to the band,
 /// λ ∈ [ω_lo, min(λ_hi, ω_hi)], α ∈ [0, min(α_hi, ω_hi)], β ∈ ±min(β_hi, ω_hi) (ω = 2πf). Both the simulation
 /// and the fit use it (a fit with `--priors`): a real pole above the band is indistinguishable from G∞ plus
 /// a broad pair, and with Table 1's λ up to 75 000 s⁻¹ most of the posterior mass of such data would lie in
 /// that out-of-band copy, outside R, leaving few points in R (the effective sample size of the reweighting).
 PriorRanges band_priors(const Grid& grid, const PriorRanges& base = PriorRanges::table1());
+/// The default `base` of the validation runs: the Gaussian residue prior of admittance scale
+/// kDefaultAdmittanceScale (its pole ranges are replaced per grid by band_priors).
+inline PriorRanges default_base_priors() { return PriorRanges::band(1.0); }
 
 /// The plausible set R: every pole's natural frequency (λ_q, √(α_s² + β_s²)) inside the grid's band,
 /// the model passive (model/passivity.hpp is_passive, exact), and kMinAbsG ≤ |G| ≤ kMaxAbsG at every grid
@@ -103,10 +108,10 @@ struct SbcSettings {
   /// L posterior draws per replicate (ranks 0..L); L + 1 a multiple of 40 so that the central 50 % and
   /// 95 % rank sets are exactly nominal.
   int draws = 199;
-  std::vector<SamplerKind> samplers{SamplerKind::full, SamplerKind::poles};
+  std::vector<SamplerKind> samplers{SamplerKind::poles};
   std::uint64_t seed = 1;
   int threads = 0;
-  PriorRanges base_priors = PriorRanges::table1();  ///< clipped to each grid's band by band_priors
+  PriorRanges base_priors = default_base_priors();  ///< made each grid's prior by band_priors
 };
 
 struct ParameterRank {

@@ -61,7 +61,7 @@ struct RecoverySettings {
   RecoveryDesign design = RecoveryDesign::prior;
   std::uint64_t seed = 1;
   int threads = 0;
-  PriorRanges base_priors = PriorRanges::table1();  ///< clipped to the band by band_priors, for truths and fits
+  PriorRanges base_priors = default_base_priors();  ///< made the grid's prior by band_priors, for truths and fits
   /// Data set indices to run (empty: all). Index i = (truth t, noise k, replicate r) with
   /// i = (t·|noise| + k)·per_cell + r; its seed depends on i and the seed only, so one set can be re-run alone.
   std::vector<int> cases;
@@ -92,7 +92,7 @@ struct RecoveryCase {
   Order nearest{0, 0};       ///< the competitor that attains D
   bool identifiable = false;
   int extra_terms = 0;       ///< (Q + S) selected − (Q + S) true
-  int fallbacks = 0;         ///< orders the pole sampler re-ran with the box mass sampled (selection/fit.hpp)
+  int fallbacks = 0;         ///< orders that ran the full sampler when the pole sampler was asked for (selection/fit.hpp)
   std::vector<OrderEvidence> evidence;  ///< every order of the fitted grid, grid order
   double log_l_truth = 0.0;  ///< ln L of the true θ (the fit's likelihood, data_count two per point)
   Measurement data;          ///< the simulated data set

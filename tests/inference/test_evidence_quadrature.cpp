@@ -4,7 +4,6 @@
 // Gauss-Legendre rule is cheap and converged.
 #include "inference/likelihood.hpp"
 #include "inference/nested_sampler.hpp"
-#include "inference/poles_sampler.hpp"
 #include "inference/priors.hpp"
 #include "inference/quadrature_evidence.hpp"
 #include "synthetic_data.hpp"
@@ -116,27 +115,15 @@ TEST_CASE("evidence: Q0S0 and Q1S0 agree with Gauss-Legendre quadrature within 3
     CHECK(run.log_z_error > 0.0);
     CHECK(std::abs(run.log_z - ref) <= 3.0 * run.log_z_error);
 
-    // The pole sampler on the same boxes: Q0S0 is the closed form itself (exact for one residue, so to
-    // 1e-6 nats); Q1S0 (one pole sampled, two residues integrated) within 3 reported errors. (The narrowed
-    // ranges leave the residues' conditional posterior inside the box here: box correction ~1e-10.)
-    NestedSettings ns;
-    ns.live = 400;
-    ns.seed = 5;
-    const PolesRun poles = run_poles_sampler(data, c.order, pr, true, DataCount::two_per_point, ns, 6);
-    MESSAGE(c.order.name(), ": quadrature ", ref, ", pole sampler ", poles.run.log_z, " ± ", poles.run.log_z_error,
-            " (box correction ", poles.truncation_correction, " ± ", poles.truncation_correction_error, ")");
     if (c.order.dim() == 1) {
-      CHECK(std::abs(poles.run.log_z - ref) <= 1e-6);
       // The adaptive Gauss-Kronrod evidence (inference/quadrature_evidence.hpp) on the same 1-D model: its
-      // target is 1e-6 relative in Z; the references agree with each other to 1e-6 (the line above).
+      // target is 1e-6 relative in Z, so 2e-6 nats with the reference's own error.
       const PriorTransform t(c.order, pr, true);
       const Model model{c.order.parameter_names(), [&](const double* u, double* th) { t(u, th); },
                         [&](const double* th) { return like(th); }};
       const NestedRun q = evidence_by_quadrature(model);
       MESSAGE(c.order.name(), ": Gauss-Kronrod ", q.log_z, " ± ", q.log_z_error, " in ", q.calls, " calls");
       CHECK(std::abs(q.log_z - ref) <= 2e-6);
-    } else {
-      CHECK(std::abs(poles.run.log_z - ref) <= 3.0 * poles.run.log_z_error);
     }
   }
 }
