@@ -115,6 +115,8 @@ std::string flag_for(const std::string& key) {
       {"phase", "--phase-unit"},
       {"points", "--points"},
       {"priors", "--priors"},
+      {"admittance_scale", "--admittance-scale"},
+      {"prior", "--prior"},
       {"qmax", "--qmax"},
       {"quantity", "--quantity"},
       {"reduce_symmetry = false", "--no-symmetry-reduction"},

@@ -10,12 +10,55 @@
 
 namespace admitgen {
 
+namespace {
+
+bool is_residue(Family f) { return f == Family::g_inf || f == Family::a || f == Family::b || f == Family::c; }
+
+/// Under the Gaussian residue prior: the residues whose posterior mean lies beyond kPriorTailSds prior standard
+/// deviations (at the posterior mean of the poles): the admittance scale, not the data, holds them back.
+std::vector<std::string> residues_in_prior_tail(const ModelResult& model, const PriorRanges& priors) {
+  const Order& o = model.order;
+  if (model.parameters.size() != static_cast<std::size_t>(o.dim())) return {};
+  std::vector<double> poles;
+  for (int q = 0; q < o.q(); ++q) poles.push_back(model.parameters[static_cast<std::size_t>(Order::lambda(q))].mean);
+  for (int s = 0; s < o.s(); ++s) {
+    poles.push_back(model.parameters[static_cast<std::size_t>(o.alpha(s))].mean);
+    poles.push_back(model.parameters[static_cast<std::size_t>(o.beta(s))].mean);
+  }
+  std::vector<double> sd(static_cast<std::size_t>(1 + o.q() + 2 * o.s()));
+  gaussian_residue_scales(o, poles.data(), priors.admittance_scale, sd.data());
+  std::vector<int> at{Order::g_inf()};
+  for (int q = 0; q < o.q(); ++q) at.push_back(Order::a(q));
+  for (int s = 0; s < o.s(); ++s) {
+    at.push_back(o.b(s));
+    at.push_back(o.c(s));
+  }
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    const ParameterSummary& p = model.parameters[static_cast<std::size_t>(at[k])];
+    if (std::abs(p.mean) > kPriorTailSds * sd[k])
+      out.push_back(fmt::format("{} = {:.6g} ({:.1f} prior standard deviations)", p.name, p.mean, std::abs(p.mean) / sd[k]));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::optional<std::string> prior_edge_warning(const ModelResult& model, const PriorRanges& priors) {
+  if (priors.residues == ResiduePrior::gaussian) {
+    const std::vector<std::string> tail = residues_in_prior_tail(model, priors);
+    if (!tail.empty())
+      return fmt::format("{}: residues far in the tail of their Gaussian prior: {}; the admittance scale {} holds them "
+                         "back and sets the evidence of {}; if such values are physical, raise it with {}",
+                         model.order.name(), fmt::join(tail, ", "), priors.admittance_scale, model.order.name(),
+                         setting("admittance_scale"));
+  }
   std::vector<std::string> against;
   const std::vector<Family> families = model.order.families();
   for (std::size_t k = 0; k < model.parameters.size() && k < families.size(); ++k) {
     const ParameterSummary& p = model.parameters[k];
     const Family f = families[k];
+    if (priors.residues == ResiduePrior::gaussian && is_residue(f)) continue;  // unbounded
     const Range& r = priors.of(f);
     const double width = r.width();
     if (!(p.std <= kPriorEdgeConcentration * width)) continue;  // spread over the range: unconstrained, not cut

@@ -18,6 +18,9 @@ namespace admitgen {
 /// at 0 of λ and α (causality) and of β (the symmetry fold) are physical limits, not cuts, and are skipped.
 inline constexpr double kPriorEdgeConcentration = 0.05;
 inline constexpr double kPriorEdgeReach = 0.01;
+/// Under the Gaussian residue prior a residue whose posterior mean lies beyond this many prior standard deviations
+/// is held back by the prior (the probability of such a draw is 6e-5).
+inline constexpr double kPriorTailSds = 4.0;
 
 /// One warning naming every parameter of `model` against a bound of `priors` (bound and 95 % interval) and
 /// the setting that widens the ranges; none when no posterior lies against a cut bound.
