@@ -100,7 +100,7 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
       "--prior",
       [&s](const std::string& kind) {
         const double scale = s.priors.admittance_scale;
-        s.priors = kind == "table1" ? PriorRanges::table1() : PriorRanges::band(FitSettings::kTwoPiTimes4kHz, scale);
+        s.priors = kind == "table1" ? PriorRanges::table1() : PriorRanges::band_of_the_data(scale);
         s.priors_origin = kind;
       },
       "band (default): Gaussian residues scaled to their poles, pole ranges scaled to the data's band; table1: the "

@@ -52,6 +52,12 @@ PriorRanges PriorRanges::band(double omega_max, double admittance_scale) {
   return p;
 }
 
+PriorRanges PriorRanges::band_of_the_data(double admittance_scale) {
+  PriorRanges p = band(2.0 * 3.14159265358979323846 * 4000.0, admittance_scale);  // the seed paper's 4 kHz
+  p.band_of_data = true;
+  return p;
+}
+
 void gaussian_residue_scales(const Order& order, const double* poles, double admittance_scale, double* sd) {
   // Docs/method.md, "The Gaussian residue prior": G∞ itself, A_q/(λ_q + jω) at ω = 0, and a pair's
   // (B + jC)/(α + j(ω − β)) at its resonance ω = β are each of size s.

@@ -56,12 +56,17 @@ struct PriorRanges {
   Range beta{-15000.0, 15000.0};
   ResiduePrior residues = ResiduePrior::uniform;
   double admittance_scale = kDefaultAdmittanceScale;  ///< s of ResiduePrior::gaussian
+  /// The pole ranges are those of `band` for the data's highest frequency, set when the data are known
+  /// (selection/fit.hpp with_band_priors); until then those of the seed paper's 4 kHz band.
+  bool band_of_data = false;
 
   /// Paper Table 1 (s⁻¹; fits 0.1-4 kHz data): every family uniform.
   static PriorRanges table1() { return {}; }
   /// The default: Gaussian residues of scale s, and pole ranges scaled to the data's highest angular frequency
   /// ω_max: λ, α ∈ [0, kBandPoleFactor·ω_max], β ∈ ±kBandResonanceFactor·ω_max (docs/method.md, "Pole ranges").
   static PriorRanges band(double omega_max, double admittance_scale = kDefaultAdmittanceScale);
+  /// `band` for data not yet read: band_of_data set (the fit's default).
+  static PriorRanges band_of_the_data(double admittance_scale = kDefaultAdmittanceScale);
   static constexpr double kBandPoleFactor = 4.0;
   static constexpr double kBandResonanceFactor = 2.0;
 

@@ -97,13 +97,14 @@ SamplerKind order_sampler(const FitSettings& settings, std::string* note) {
 }
 
 FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
-  if (settings.priors_origin == "band")
+  if (settings.priors.band_of_data)
     settings.priors = PriorRanges::band(data.omega().maxCoeff(), settings.priors.admittance_scale);
   return settings;
 }
 
-ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
+ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& given,
                       const NestedProgressFn& progress, int round) {
+  const FitSettings settings = with_band_priors(given, data);
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
   std::string note;

@@ -33,12 +33,9 @@ struct FitSettings {
   int qmax = 3;
   int smax = 3;
   NestedSettings sampler;  ///< live, dlogz, max_iterations, slices, seed (the user seed)
-  /// The priors as used. With priors_origin "band" (the default) their pole ranges are those of
-  /// PriorRanges::band for the data's highest frequency, set by with_band_priors when the data are known;
-  /// until then, those of the seed paper's 4 kHz band.
-  PriorRanges priors = PriorRanges::band(kTwoPiTimes4kHz);
-  std::string priors_origin = "band";  ///< "band", "table1" or the prior file's path
-  static constexpr double kTwoPiTimes4kHz = 25132.741228718345;
+  /// The priors (PriorRanges::band_of_data: the pole ranges follow the data, with_band_priors).
+  PriorRanges priors = PriorRanges::band_of_the_data();
+  std::string priors_origin = "band";  ///< "band", "table1" or the prior file's path (a label for fit.json)
   bool reduce_symmetry = true;
   DataCount data_count = DataCount::two_per_point;
   SelectionRule rule = SelectionRule::simplest(10.0);  ///< Occam among the orders the evidence cannot tell apart (selection_rule.hpp)
@@ -129,7 +126,9 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
 SamplerKind order_sampler(const FitSettings& settings, std::string* note = nullptr);
 
 /// `settings` with the band priors resolved for `data` (PriorRanges::band at its highest angular frequency,
-/// the admittance scale kept) when priors_origin is "band"; otherwise unchanged.
+/// the admittance scale kept) when priors.band_of_data; otherwise unchanged. Every entry point that has the
+/// data applies it (fit_order, run_first_round, complete_fit, fit_record), so a fit, a library unit and a
+/// validation run agree.
 FitSettings with_band_priors(FitSettings settings, const Measurement& data);
 
 /// Seed of the run for `order`, derived from the user seed (independent of grid and thread count).

@@ -76,7 +76,7 @@ RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind k
   fit.smax = settings.smax;
   fit.grid_growth = 0;  // the map is over the stated grid, which holds every truth with a margin
   fit.priors = priors;
-  fit.priors_origin = "validation priors of " + settings.grid.name;  // as given: not re-derived from the data
+  fit.priors_origin = "validation priors of " + settings.grid.name;
   fit.sampler.live = settings.live;
   fit.sampler.seed = derive_seed(seed, 1);
   fit.sampler_kind = kind;

@@ -7,19 +7,19 @@
  *
  * Continuous model (time dependence e^{+jwt}; G = rho c v_n / p normalised admittance, v_n into the wall):
  *   G(s) = G_inf + sum_q A_q/(lambda_q + s) + sum_s [(B_s + jC_s)/(alpha_s + j beta_s + s) + (B_s - jC_s)/(alpha_s - j beta_s + s)]
- *   G_inf = 0.9931757467170532
- *   B_1 = -9995.266953889304
- *   C_1 = -839.2075767885297
- *   alpha_1 = 12343.813938142988
- *   beta_1 = 1468.458435675424
- *   B_2 = 3.219420919089316
- *   C_2 = -215.00286117987002
- *   alpha_2 = 749.2733310184884
- *   beta_2 = 3630.0579852893316
- *   B_3 = 5063.92398383949
- *   C_3 = 998.7276675261232
- *   alpha_3 = 4835.720129881755
- *   beta_3 = 7756.565526706039
+ *   G_inf = 0.7372843101391041
+ *   B_1 = -90.11631704590312
+ *   C_1 = -115.36406577416561
+ *   alpha_1 = 574.3741887894225
+ *   beta_1 = 3365.5426342647625
+ *   B_2 = 1682.6850290911416
+ *   C_2 = -9275.811541151745
+ *   alpha_2 = 6833.241840008868
+ *   beta_2 = 3636.069694743055
+ *   B_3 = -813.0563874009912
+ *   C_3 = 715.9894098296401
+ *   alpha_3 = 2719.0412302965874
+ *   beta_3 = 11298.984666881192
  *
  * Discretisation (method "matched exponential, refitted numerators", ADMITGEN_RT_METHOD_MATCHED_EXP):
  *   every pole keeps its exact image z = e^{-aT} (as PLRC; L-stable); residues, direct term and a short FIR
@@ -70,37 +70,36 @@
 #define WALL_48000_Q15_HAS_FS_48000 1
 
 /* ---- fs = 48000 Hz ------------------------------------------------------------------------------------
- * refit: max |H - G|/|G| at the data frequencies = 2.71e-06 (plain PLRC coefficients: 0.0012)
+ * refit: max |H - G|/|G| at the data frequencies = 9.4e-06 (plain PLRC coefficients: 0.000858)
  * passivity of H: Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive
- * terms: 3 FIR taps, 0 real poles, 3 pairs; folded into the FIR path: none
- * L1 norm of the emitted impulse response 2.1134; tail to -120 dB: 889 samples
- * output scaling: y_q15 = y * 2^-2; output table exponent y_exp = 3, acc_shift = 30
- * zero input after any excitation decays to exactly 0 within 1403 samples
+ * terms: 2 FIR taps, 0 real poles, 3 pairs; folded into the FIR path: none
+ * L1 norm of the emitted impulse response 1.81203; tail to -120 dB: 1157 samples
+ * output scaling: y_q15 = y * 2^-1; output table exponent y_exp = 3, acc_shift = 29
+ * zero input after any excitation decays to exactly 0 within 1828 samples
  */
-static const int16_t wall_48000_q15_48000_fir[3] = {
-  4636, /* d_0 */
-  -165, /* d_1 */
-  55, /* d_2 */
+static const int16_t wall_48000_q15_48000_fir[2] = {
+  2930, /* d_0 */
+  13, /* d_1 */
 };
 static const int16_t wall_48000_q15_48000_real[1] = {
   0 /* padding: C has no empty arrays */
 };
 static const int16_t wall_48000_q15_48000_pair[18] = {
-  -14885, -1550, 14861, 1, -7532, 614, /* alpha = 12343.8, beta = 1468.46 1/s (233.712 Hz), alpha T = 0.2572 */
-  -4798, -19499, 4060, 3, 35, 2369, /* alpha = 749.273, beta = 3630.06 1/s (577.742 Hz), alpha T = 0.01561 */
-  -7053, -9534, 6281, 1, 9018, -1779, /* alpha = 4835.72, beta = 7756.57 1/s (1234.5 Hz), alpha T = 0.1007 */
+  -3755, -18147, 3118, 3, -1293, 1655, /* alpha = 574.374, beta = 3365.54 1/s (535.643 Hz), alpha T = 0.01197 */
+  -8859, -4302, 8696, 1, 2163, 11930, /* alpha = 6833.24, beta = 3636.07 1/s (578.698 Hz), alpha T = 0.1424 */
+  -5317, -14443, 3609, 1, -2520, -2218, /* alpha = 2719.04, beta = 11299 1/s (1798.29 Hz), alpha T = 0.05665 */
 };
-#define WALL_48000_Q15_48000_ZERO_DECAY_SAMPLES 1403
-#define WALL_48000_Q15_48000_OUT_SHIFT 2
+#define WALL_48000_Q15_48000_ZERO_DECAY_SAMPLES 1828
+#define WALL_48000_Q15_48000_OUT_SHIFT 1
 static const admitgen_rt_model_q15 wall_48000_q15_48000 = {
   ADMITGEN_RT_FIELD(abi_version) 1u,
   ADMITGEN_RT_FIELD(fs_hz) 48000,
   ADMITGEN_RT_FIELD(method) ADMITGEN_RT_METHOD_MATCHED_EXP,
-  ADMITGEN_RT_FIELD(n_fir) 3,
+  ADMITGEN_RT_FIELD(n_fir) 2,
   ADMITGEN_RT_FIELD(n_real) 0,
   ADMITGEN_RT_FIELD(n_pair) 3,
-  ADMITGEN_RT_FIELD(out_shift) 2,
-  ADMITGEN_RT_FIELD(acc_shift) 30,
+  ADMITGEN_RT_FIELD(out_shift) 1,
+  ADMITGEN_RT_FIELD(acc_shift) 29,
   ADMITGEN_RT_FIELD(fir) wall_48000_q15_48000_fir,
   ADMITGEN_RT_FIELD(real) wall_48000_q15_48000_real,
   ADMITGEN_RT_FIELD(pair) wall_48000_q15_48000_pair};
@@ -118,34 +117,33 @@ static inline const admitgen_rt_model_q15 *wall_48000_q15_model(int32_t fs_hz) {
 #define WALL_48000_Q15_Q 0
 #define WALL_48000_Q15_S 3
 static const double wall_48000_q15_theta[13] = {
-  0.9931757467170532, /* G_inf */
-  -9995.266953889304, /* B_1 */
-  -839.2075767885297, /* C_1 */
-  12343.813938142988, /* alpha_1 */
-  1468.458435675424, /* beta_1 */
-  3.219420919089316, /* B_2 */
-  -215.00286117987002, /* C_2 */
-  749.2733310184884, /* alpha_2 */
-  3630.0579852893316, /* beta_2 */
-  5063.92398383949, /* B_3 */
-  998.7276675261232, /* C_3 */
-  4835.720129881755, /* alpha_3 */
-  7756.565526706039 /* beta_3 */
+  0.7372843101391041, /* G_inf */
+  -90.11631704590312, /* B_1 */
+  -115.36406577416561, /* C_1 */
+  574.3741887894225, /* alpha_1 */
+  3365.5426342647625, /* beta_1 */
+  1682.6850290911416, /* B_2 */
+  -9275.811541151745, /* C_2 */
+  6833.241840008868, /* alpha_2 */
+  3636.069694743055, /* beta_2 */
+  -813.0563874009912, /* B_3 */
+  715.9894098296401, /* C_3 */
+  2719.0412302965874, /* alpha_3 */
+  11298.984666881192 /* beta_3 */
 };
-static const double wall_48000_q15_48000_ref_fir[3] = {
-  1.1319460246946143,
-  -0.04020430566782352,
-  0.013331982433469534,
+static const double wall_48000_q15_48000_ref_fir[2] = {
+  0.7154263938806875,
+  0.0032659074196584696,
 };
 static const double wall_48000_q15_48000_ref_real[1] = {
   0.0
 };
 static const double wall_48000_q15_48000_ref_pair[15] = {
-  -0.22711949291142008, -0.02365202305523904, 0.22675767289154042, -1.8388159407031124, 0.1498121280032142,
-  -0.018302686420732642, -0.07438390789574699, 0.015488658652124333, 0.008662822365242077, 0.5783854966922961,
-  -0.10761522992971019, -0.14547347826975376, 0.09583568377572844, 2.2016394330578404, -0.43431544385184956,
+  -0.014322675777672853, -0.06922470793807176, 0.011894819528205303, -0.31566317548094625, 0.4041136675106439,
+  -0.1351775856309759, -0.06563714981178904, 0.13269034144056527, 0.5281600169206514, 2.912710004728358,
+  -0.08113119672718633, -0.2203832667824219, 0.055072139311309706, -0.6151846602889514, -0.5416173036733289,
 };
-#define WALL_48000_Q15_48000_REF_H0 0.9261101970981921
+#define WALL_48000_Q15_48000_REF_H0 0.7478738350434835
 #endif
 
 /* Band absorption from the continuous model, for engines that take material absorption instead of a filter:
@@ -153,54 +151,54 @@ static const double wall_48000_q15_48000_ref_pair[15] = {
  * mean over the band (IEC 61260 base-10 bands). */
 #define WALL_48000_Q15_N_OCTAVE 10
 static const float wall_48000_q15_octave[10][3] = {
-  { 31.622776f, 0.14571911f, 0.24310191f }, /* 22-45 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.15213048f, 0.24664325f }, /* 45-89 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.17618008f, 0.2648315f }, /* 89-178 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.2524778f, 0.32469523f }, /* 178-355 Hz, outside the data: model extrapolation */
-  { 501.18723f, 0.52287346f, 0.5107504f }, /* 355-708 Hz */
-  { 1000.0f, 0.9379067f, 0.8438476f }, /* 708-1413 Hz */
-  { 1995.2623f, 0.9758208f, 0.9375533f }, /* 1413-2818 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.96611047f, 0.9256324f }, /* 2818-5623 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.98948044f, 0.91344863f }, /* 5623-11220 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.9972666f, 0.91143125f }, /* 11220-22387 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.032075513f, 0.05845501f }, /* 22-45 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.04716486f, 0.08067723f }, /* 45-89 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.1016437f, 0.15348972f }, /* 89-178 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.25246376f, 0.31692538f }, /* 178-355 Hz, outside the data: model extrapolation */
+  { 501.18723f, 0.5277126f, 0.5168906f }, /* 355-708 Hz */
+  { 1000.0f, 0.9380044f, 0.8437909f }, /* 708-1413 Hz */
+  { 1995.2623f, 0.985877f, 0.93297744f }, /* 1413-2818 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.9893137f, 0.93820477f }, /* 2818-5623 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.98212147f, 0.9440536f }, /* 5623-11220 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.97853386f, 0.94609565f }, /* 11220-22387 Hz, outside the data: model extrapolation */
 };
 #define WALL_48000_Q15_N_THIRD_OCTAVE 30
 static const float wall_48000_q15_third_octave[30][3] = {
-  { 25.118864f, 0.14482254f, 0.24274617f }, /* 22-28 Hz, outside the data: model extrapolation */
-  { 31.622776f, 0.145574f, 0.24302424f }, /* 28-35 Hz, outside the data: model extrapolation */
-  { 39.81072f, 0.14676122f, 0.24353556f }, /* 35-45 Hz, outside the data: model extrapolation */
-  { 50.118725f, 0.14863333f, 0.24447808f }, /* 45-56 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.15157677f, 0.24619645f }, /* 56-71 Hz, outside the data: model extrapolation */
-  { 79.43282f, 0.15618305f, 0.24925661f }, /* 71-89 Hz, outside the data: model extrapolation */
-  { 100.0f, 0.16333841f, 0.25452378f }, /* 89-112 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.17432438f, 0.26320484f }, /* 112-141 Hz, outside the data: model extrapolation */
-  { 158.48932f, 0.190883f, 0.2767707f }, /* 141-178 Hz, outside the data: model extrapolation */
-  { 199.52623f, 0.21512337f, 0.29660273f }, /* 178-224 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.24901864f, 0.32313144f }, /* 224-282 Hz, outside the data: model extrapolation */
-  { 316.22775f, 0.29330117f, 0.35435534f }, /* 282-355 Hz */
-  { 398.10718f, 0.34921438f, 0.38685974f }, /* 355-447 Hz */
-  { 501.18723f, 0.47060007f, 0.46276227f }, /* 447-562 Hz */
-  { 630.95734f, 0.7488226f, 0.6826507f }, /* 562-708 Hz */
-  { 794.32825f, 0.88367796f, 0.8014004f }, /* 708-891 Hz */
-  { 1000.0f, 0.94368625f, 0.84606266f }, /* 891-1122 Hz */
-  { 1258.9254f, 0.9863253f, 0.8840597f }, /* 1122-1413 Hz */
-  { 1584.8932f, 0.99718744f, 0.91994077f }, /* 1413-1778 Hz */
-  { 1995.2623f, 0.9753728f, 0.9454147f }, /* 1778-2239 Hz, outside the data: model extrapolation */
-  { 2511.8865f, 0.9548991f, 0.94728786f }, /* 2239-2818 Hz, outside the data: model extrapolation */
-  { 3162.2776f, 0.9555355f, 0.9347495f }, /* 2818-3548 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.9660997f, 0.9240896f }, /* 3548-4467 Hz, outside the data: model extrapolation */
-  { 5011.8726f, 0.9766982f, 0.9180617f }, /* 4467-5623 Hz, outside the data: model extrapolation */
-  { 6309.573f, 0.9846638f, 0.9148936f }, /* 5623-7079 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.9901026f, 0.913198f }, /* 7079-8913 Hz, outside the data: model extrapolation */
-  { 10000.0f, 0.9936731f, 0.9122551f }, /* 8913-11220 Hz, outside the data: model extrapolation */
-  { 12589.254f, 0.99597484f, 0.9117115f }, /* 11220-14125 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.997445f, 0.91138893f }, /* 14125-17783 Hz, outside the data: model extrapolation */
-  { 19952.623f, 0.99837935f, 0.91119355f }, /* 17783-22387 Hz, outside the data: model extrapolation */
+  { 25.118864f, 0.029946346f, 0.05530276f }, /* 22-28 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.031732656f, 0.057933304f }, /* 28-35 Hz, outside the data: model extrapolation */
+  { 39.81072f, 0.034548596f, 0.062130556f }, /* 35-45 Hz, outside the data: model extrapolation */
+  { 50.118725f, 0.03897378f, 0.06873093f }, /* 45-56 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.045893658f, 0.07893278f }, /* 56-71 Hz, outside the data: model extrapolation */
+  { 79.43282f, 0.05663102f, 0.094373226f }, /* 71-89 Hz, outside the data: model extrapolation */
+  { 100.0f, 0.07309058f, 0.117134646f }, /* 89-112 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.09784784f, 0.14957045f }, /* 112-141 Hz, outside the data: model extrapolation */
+  { 158.48932f, 0.13400374f, 0.19377527f }, /* 141-178 Hz, outside the data: model extrapolation */
+  { 199.52623f, 0.18442978f, 0.250472f }, /* 178-224 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.24970861f, 0.3170037f }, /* 224-282 Hz, outside the data: model extrapolation */
+  { 316.22775f, 0.32325646f, 0.38329577f }, /* 282-355 Hz */
+  { 398.10718f, 0.37930682f, 0.41987994f }, /* 355-447 Hz */
+  { 501.18723f, 0.4527502f, 0.44559208f }, /* 447-562 Hz */
+  { 630.95734f, 0.7510961f, 0.68521637f }, /* 562-708 Hz */
+  { 794.32825f, 0.8821359f, 0.79822576f }, /* 708-891 Hz */
+  { 1000.0f, 0.9461532f, 0.8488489f }, /* 891-1122 Hz */
+  { 1258.9254f, 0.9856932f, 0.88427806f }, /* 1122-1413 Hz */
+  { 1584.8932f, 0.9965979f, 0.91859263f }, /* 1413-1778 Hz */
+  { 1995.2623f, 0.9760707f, 0.9446141f }, /* 1778-2239 Hz, outside the data: model extrapolation */
+  { 2511.8865f, 0.9849595f, 0.9357154f }, /* 2239-2818 Hz, outside the data: model extrapolation */
+  { 3162.2776f, 0.99098086f, 0.9354747f }, /* 2818-3548 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.9899337f, 0.9382726f }, /* 3548-4467 Hz, outside the data: model extrapolation */
+  { 5011.8726f, 0.98702407f, 0.9408675f }, /* 4467-5623 Hz, outside the data: model extrapolation */
+  { 6309.573f, 0.98416746f, 0.9428263f }, /* 5623-7079 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.9819097f, 0.9442022f }, /* 7079-8913 Hz, outside the data: model extrapolation */
+  { 10000.0f, 0.98028785f, 0.9451319f }, /* 8913-11220 Hz, outside the data: model extrapolation */
+  { 12589.254f, 0.97918123f, 0.945745f }, /* 11220-14125 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9784485f, 0.946143f }, /* 14125-17783 Hz, outside the data: model extrapolation */
+  { 19952.623f, 0.97797215f, 0.94639874f }, /* 17783-22387 Hz, outside the data: model extrapolation */
 };
 
 /* Machine-readable description of exactly the coefficients above (schema admitgen.emit/1), read by
  * admitgen check:
-admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q15","format":"q15","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.9931757467170532,-9995.266953889304,-839.2075767885297,12343.813938142988,1468.458435675424,3.219420919089316,-215.00286117987002,749.2733310184884,3630.0579852893316,5063.92398383949,998.7276675261232,4835.720129881755,7756.565526706039]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":2.7085638384661935e-06,"plrc_max_rel_error":0.0011988775793904905,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[1.1319460246946143,-0.04020430566782352,0.013331982433469534],"real":[],"pair":[[-0.22711949291142008,-0.02365202305523904,0.22675767289154042,-1.8388159407031124,0.1498121280032142],[-0.018302686420732642,-0.07438390789574699,0.015488658652124333,0.008662822365242077,0.5783854966922961],[-0.10761522992971019,-0.14547347826975376,0.09583568377572844,2.2016394330578404,-0.43431544385184956]]},"q15":{"bits":15,"out_shift":2,"y_exp":3,"acc_shift":30,"l1_norm":2.1134003982327787,"zero_decay_bound":1403,"fir":[4636,-165,55],"real":[],"pair":[[-14885,-1550,14861,1,-7532,614],[-4798,-19499,4060,3,35,2369],[-7053,-9534,6281,1,9018,-1779]]}}]} admitgen:end
+admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q15","format":"q15","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7372843101391041,-90.11631704590312,-115.36406577416561,574.3741887894225,3365.5426342647625,1682.6850290911416,-9275.811541151745,6833.241840008868,3636.069694743055,-813.0563874009912,715.9894098296401,2719.0412302965874,11298.984666881192]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":9.39692935092186e-06,"plrc_max_rel_error":0.0008576497678161865,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.7154263938806875,0.0032659074196584696],"real":[],"pair":[[-0.014322675777672853,-0.06922470793807176,0.011894819528205303,-0.31566317548094625,0.4041136675106439],[-0.1351775856309759,-0.06563714981178904,0.13269034144056527,0.5281600169206514,2.912710004728358],[-0.08113119672718633,-0.2203832667824219,0.055072139311309706,-0.6151846602889514,-0.5416173036733289]]},"q15":{"bits":15,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.8120345672344185,"zero_decay_bound":1828,"fir":[2930,13],"real":[],"pair":[[-3755,-18147,3118,3,-1293,1655],[-8859,-4302,8696,1,2163,11930],[-5317,-14443,3609,1,-2520,-2218]]}}]} admitgen:end
  */
 
 #endif /* WALL_48000_Q15_H */
