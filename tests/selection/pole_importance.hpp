@@ -1,24 +1,28 @@
 // SPDX-License-Identifier: MIT
-// An importance-sampling estimate of an order's evidence over the poles, with the residues integrated out
-// (inference/residue_marginal.hpp) and no nested sampling: Z = E_q[L(ψ) π(ψ)/q(ψ)] (docs/method.md, "Status
-// of the pole sampler"). The proposal q is built from posterior samples of any runs (both samplers, so a mode
-// either found is covered): a mixture of multivariate t_5 kernels centred on K resampled posterior points of
-// each run, with covariance h²Σ_r (Σ_r that run's posterior covariance, h Silverman's bandwidth), plus a
-// defensive t_3(mean_r, 4Σ_r) per run with weight 0.2 in all. q only sets the variance; the estimate is unbiased for any q that covers the
+// An importance-sampling estimate of an order's evidence over the poles, with no nested sampling:
+// Z = E_q[L(ψ) π(ψ)/q(ψ)], L(ψ) the likelihood of the poles alone under the Gaussian residue prior, the residues
+// and the noise σ integrated out exactly (inference/residue_evidence.hpp; docs/method.md, "The closed-form
+// marginal"). That is the integrand the pole sampler explores (docs/method.md, "Sampling the poles only"), so an
+// error in its exploration or in its evidence accounting shows up against this estimate; L itself is checked
+// against brute-force integration over r and σ in tests/inference/test_residue_evidence.cpp.
+//
+// The proposal q is built from posterior samples of any runs (both samplers, so a mode either found is covered):
+// a mixture of multivariate t_5 kernels centred on K resampled posterior points of each run, with covariance
+// h²Σ_r (Σ_r that run's posterior covariance, h Silverman's bandwidth), plus a defensive t_3(mean_r, 4Σ_r) per
+// run with weight 0.2 in all. q only sets the variance; the estimate is unbiased for any q that covers the
 // posterior. Its error is the sample standard error of the mean of the ratios.
 //
 // The integral runs over the fundamental domain D of the order's symmetries, D = {λ ascending, β ≥ 0, pairs
 // ascending in β} (model/order.hpp; the form fit.json reports, fold_to_reduced): L is invariant under the
-// Q! S! 2^S relabellings, so Z = Q! S! 2^S ∫_D L(ψ)/V_ψ dψ. This does not use the sampler's own fold.
+// Q! S! 2^S relabellings, so with the poles uniform over the ranges of `priors` (volume V_ψ),
+// Z = Q! S! 2^S ∫_D L(ψ)/V_ψ dψ. This does not use the sampler's own fold.
 #pragma once
 
 #include "core/rng.hpp"
-#include "inference/pole_space.hpp"
-#include "inference/residue_draws.hpp"
-#include "inference/residue_marginal.hpp"
 #include "inference/evidence.hpp"
+#include "inference/pole_space.hpp"
 #include "inference/posterior.hpp"
-#include "inference/student_t.hpp"
+#include "inference/residue_evidence.hpp"
 #include "selection/fit.hpp"
 
 #include <Eigen/Cholesky>
@@ -35,17 +39,45 @@ struct ImportanceEstimate {
   double ess = 0.0;  ///< Kish effective sample size of the ratios
 };
 
+/// A χ²_ν draw for integer ν: the sum of ν squared standard normals.
+inline double chi_square_draw(int nu, Rng& rng) {
+  double w = 0.0;
+  for (int i = 0; i < nu; ++i) {
+    const double g = rng.normal();
+    w += g * g;
+  }
+  return w;
+}
+
+/// ln L(ψ) (ResidueEvidence, two real data per point, the admittance scale of `priors`), −∞ where the poles
+/// lie outside the model's domain.
+inline double pole_log_evidence(const ResidueEvidence& evidence, const double* psi) {
+  const ResiduePosterior& c = evidence.posterior(psi);
+  return c.valid ? c.log_evidence : -std::numeric_limits<double>::infinity();
+}
+
+/// ln of the prior density of the poles on D: ln(Q! S! 2^S / V_ψ), V_ψ = |λ|^Q (|α| |β|)^S over the ranges of
+/// `priors`.
+inline double log_domain_prior(const Order& order, const PriorRanges& priors) {
+  double log_prior = -order.q() * std::log(priors.lambda.width()) -
+                     order.s() * std::log(priors.alpha.width() * priors.beta.width()) + order.s() * std::log(2.0);
+  for (int j = 2; j <= order.q(); ++j) log_prior += std::log(static_cast<double>(j));
+  for (int j = 2; j <= order.s(); ++j) log_prior += std::log(static_cast<double>(j));
+  return log_prior;
+}
+
 namespace detail {
 
-/// Multivariate t_ν: log density at x and draws, location μ and scale matrix C = LLᵀ.
+/// Multivariate t_ν (integer ν): log density at x and draws, location μ and scale matrix C = LLᵀ.
 struct MultivariateT {
   Eigen::VectorXd mean;
   Eigen::MatrixXd chol;
-  double nu = 5.0, log_norm = 0.0;
-  MultivariateT(Eigen::VectorXd m, const Eigen::MatrixXd& cov, double dof) : mean(std::move(m)), nu(dof) {
+  int nu = 5;
+  double log_norm = 0.0;
+  MultivariateT(Eigen::VectorXd m, const Eigen::MatrixXd& cov, int dof) : mean(std::move(m)), nu(dof) {
     chol = Eigen::LLT<Eigen::MatrixXd>(cov).matrixL();
-    const double d = static_cast<double>(mean.size());
-    log_norm = std::lgamma(0.5 * (nu + d)) - std::lgamma(0.5 * nu) - 0.5 * d * std::log(nu * EIGEN_PI) -
+    const double d = static_cast<double>(mean.size()), n = static_cast<double>(nu);
+    log_norm = std::lgamma(0.5 * (n + d)) - std::lgamma(0.5 * n) - 0.5 * d * std::log(n * EIGEN_PI) -
                chol.diagonal().array().log().sum();
   }
   double log_density(const Eigen::VectorXd& x) const {
@@ -59,7 +91,7 @@ struct MultivariateT {
   }
 };
 
-/// ψ in D and in the prior box (pole_space.hpp packing).
+/// ψ in D and in the pole ranges of `priors` (pole_space.hpp packing).
 inline bool in_domain(const Order& order, const PriorRanges& priors, const Eigen::VectorXd& psi) {
   const int q = order.q();
   for (int j = 0; j < q; ++j)
@@ -73,16 +105,6 @@ inline bool in_domain(const Order& order, const PriorRanges& priors, const Eigen
 }
 
 }  // namespace detail
-
-/// ln P_box of the residues given ψ: the sampled bound where the lower and upper bounds agree to 1e-9, else
-/// the fraction of `box_draws` untruncated draws inside the box (unbiased).
-inline double log_box_mass(const ResidueConditional& c, const ResidueMarginal& marginal, long box_draws, Rng& rng) {
-  if (!(-std::expm1(c.log_p_lo - c.log_p_up) > 1e-9)) return c.log_p_sampled;
-  long hits = 0;
-  for (long b = 0; b < box_draws; ++b)
-    hits += in_residue_box(untruncated_residue_draw(c, rng), marginal.box_lo(), marginal.box_hi()) ? 1 : 0;
-  return std::log(static_cast<double>(hits) / static_cast<double>(box_draws));
-}
 
 /// ln of the mean of the ratios e^{log_ratio} (ln Z), the standard error of that mean relative to it, and
 /// the Kish effective sample size.
@@ -99,13 +121,13 @@ inline ImportanceEstimate mean_of_ratios(const std::vector<double>& log_ratio) {
   return {top + std::log(mean_ratio), std::sqrt((sum2 / n - mean_ratio * mean_ratio) / n) / mean_ratio, sum * sum / sum2};
 }
 
-/// ln Z of `order` by importance sampling, q built from the posterior samples of `runs` (θ as fit_order
-/// returns them, folded to the reduced form), `kernels` resampled points per run, `draws` proposal draws,
-/// `box_draws` untruncated residue draws for P_box where its bounds differ by more than 1e-9.
+/// ln Z of `order` under `priors` (ResiduePrior::gaussian) by importance sampling, q built from the posterior
+/// samples of `runs` (θ as fit_order returns them, folded to the reduced form), `kernels` resampled points per
+/// run, `draws` proposal draws.
 inline ImportanceEstimate importance_log_z(const Measurement& data, const Order& order, const PriorRanges& priors,
                                            const std::vector<const ModelResult*>& runs, int kernels, long draws,
-                                           long box_draws, std::uint64_t seed) {
-  const ResidueMarginal marginal(data, order, DataCount::two_per_point, priors);
+                                           std::uint64_t seed) {
+  const ResidueEvidence evidence(data, order, DataCount::two_per_point, priors.admittance_scale);
   const std::vector<int> poles = pole_indices(order);
   const Eigen::Index d = static_cast<Eigen::Index>(poles.size());
   Rng rng(seed);
@@ -129,8 +151,8 @@ inline ImportanceEstimate importance_log_z(const Measurement& data, const Order&
     for (const auto& c : centres) cov += (c - mean) * (c - mean).transpose();
     cov /= k - 1.0;
     cov.diagonal().array() += 1e-9 * cov.diagonal().array().maxCoeff() + 1e-12;
-    for (const auto& c : centres) kernel.emplace_back(c, h * h * cov, 5.0);
-    wide.emplace_back(mean, 4.0 * cov, 3.0);
+    for (const auto& c : centres) kernel.emplace_back(c, h * h * cov, 5);
+    wide.emplace_back(mean, 4.0 * cov, 3);
   }
   constexpr double kWide = 0.2;
   const double log_kernels = std::log(static_cast<double>(kernel.size())), log_wides = std::log(static_cast<double>(wide.size()));
@@ -140,23 +162,16 @@ inline ImportanceEstimate importance_log_z(const Measurement& data, const Order&
     for (const auto& t : wide) lw = log_add_exp(lw, t.log_density(x));
     return log_add_exp(std::log1p(-kWide) + lk - log_kernels, std::log(kWide) + lw - log_wides);
   };
-  // Prior density on D: Q! S! 2^S / V_ψ.
-  double log_prior = -order.q() * std::log(priors.lambda.width()) -
-                     order.s() * std::log(priors.alpha.width() * priors.beta.width()) +
-                     order.s() * std::log(2.0);
-  for (int j = 2; j <= order.q(); ++j) log_prior += std::log(static_cast<double>(j));
-  for (int j = 2; j <= order.s(); ++j) log_prior += std::log(static_cast<double>(j));
+  const double log_prior = log_domain_prior(order, priors);
   std::vector<double> log_ratio;
   for (long i = 0; i < draws; ++i) {
     const Eigen::VectorXd psi = rng.uniform() < kWide ? wide[static_cast<std::size_t>(rng.below(wide.size()))].draw(rng)
                                                        : kernel[static_cast<std::size_t>(rng.below(kernel.size()))].draw(rng);
-    const ResidueConditional* c = detail::in_domain(order, priors, psi) ? &marginal.conditional(psi.data()) : nullptr;
-    if (c == nullptr || !c->valid) {
+    if (!detail::in_domain(order, priors, psi)) {
       log_ratio.push_back(-std::numeric_limits<double>::infinity());
       continue;
     }
-    log_ratio.push_back(c->log_marginal - c->log_p_sampled + log_box_mass(*c, marginal, box_draws, rng) + log_prior -
-                        log_q(psi));
+    log_ratio.push_back(pole_log_evidence(evidence, psi.data()) + log_prior - log_q(psi));
   }
   return mean_of_ratios(log_ratio);
 }
