@@ -2,19 +2,25 @@
 #include "selection/fit_cost.hpp"
 
 #include "core/errors.hpp"
+#include "inference/pole_space.hpp"
+#include "inference/residue_evidence.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <memory>
 #include <thread>
 #include <vector>
 
 namespace admitgen {
 namespace {
 
-/// Evaluations per order / (live × dim × slices), from the bundled fits (fit_cost.hpp).
+/// Evaluations per order / (live × dim × slices), from the bundled fits (fit_cost.hpp): the full sampler over
+/// θ, and the pole sampler over ψ (dim = Q + 2S).
 constexpr double kEvaluationsPerLiveDimSlice = 27.0;
+constexpr double kPoleEvaluationsPerLiveDimSlice = 20.0;
 
 /// θ in the middle of every prior range (a valid point of any order: λ, α > 0).
 std::vector<double> prior_centre(const Order& order, const PriorRanges& priors) {
@@ -24,15 +30,24 @@ std::vector<double> prior_centre(const Order& order, const PriorRanges& priors) 
 }
 
 double seconds_per_evaluation(const Measurement& data, const Order& order, const FitSettings& settings) {
-  const Likelihood likelihood(data, order, settings.data_count);
   const auto theta = prior_centre(order, settings.priors);
+  std::function<double()> call;
+  if (order_sampler(settings) == SamplerKind::poles) {
+    auto evidence = std::make_shared<ResidueEvidence>(data, order, settings.data_count, settings.priors.admittance_scale);
+    auto poles = std::make_shared<std::vector<double>>();
+    for (int i : pole_indices(order)) poles->push_back(theta[static_cast<std::size_t>(i)]);
+    call = [evidence, poles] { return (*evidence)(poles->data()); };
+  } else {
+    auto likelihood = std::make_shared<Likelihood>(data, order, settings.data_count);
+    call = [likelihood, theta] { return (*likelihood)(theta.data()); };
+  }
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   double elapsed = 0.0;
   volatile double sink = 0.0;  // keeps the calls
   long calls = 0;
   while (calls < 3 || (elapsed < 0.02 && calls < 100000)) {
-    sink += likelihood(theta.data());
+    sink += call();
     ++calls;
     elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   }
@@ -51,14 +66,17 @@ std::string duration(double seconds) {
 FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& settings) {
   FitCostEstimate e;
   e.points = static_cast<long>(data.size());
+  const bool poles = order_sampler(settings) == SamplerKind::poles;
   const Order largest(settings.qmax, settings.smax);
   e.seconds_per_evaluation = seconds_per_evaluation(data, largest, settings);
   const double largest_terms = 1.0 + settings.qmax + settings.smax;
   for (int q = 0; q <= settings.qmax; ++q)
     for (int s = 0; s <= settings.smax; ++s) {
       const Order order(q, s);
-      const double slices = settings.sampler.slices > 0 ? settings.sampler.slices : 3.0 + order.dim();
-      const double evaluations = kEvaluationsPerLiveDimSlice * settings.sampler.live * order.dim() * slices;
+      const double dim = poles ? pole_count(order) : order.dim();
+      const double slices = settings.sampler.slices > 0 ? settings.sampler.slices : 3.0 + dim;
+      const double evaluations =
+          (poles ? kPoleEvaluationsPerLiveDimSlice : kEvaluationsPerLiveDimSlice) * settings.sampler.live * dim * slices;
       e.evaluations += evaluations;
       const double seconds = evaluations * e.seconds_per_evaluation * (1.0 + q + s) / largest_terms;
       e.cpu_seconds += seconds;

@@ -50,8 +50,19 @@ double rms_abs(const Eigen::ArrayXd& re, const Eigen::ArrayXd& im) {
 
 }  // namespace
 
+PoleWindow band_window(const Eigen::ArrayXd& omega) { return {omega.minCoeff(), omega.maxCoeff()}; }
+
+PoleWindow prior_window(const PriorRanges& priors) {
+  const double beta = std::max(std::abs(priors.beta.lo), std::abs(priors.beta.hi));
+  return {0.0, std::max(priors.lambda.hi, std::hypot(priors.alpha.hi, beta))};
+}
+
 bool plausible(const Order& order, const double* theta, const Eigen::ArrayXd& omega) {
-  const double lo = omega.minCoeff(), hi = omega.maxCoeff();
+  return plausible(order, theta, omega, band_window(omega));
+}
+
+bool plausible(const Order& order, const double* theta, const Eigen::ArrayXd& omega, const PoleWindow& window) {
+  const double lo = window.lo, hi = window.hi;
   for (int q = 0; q < order.q(); ++q) {
     const double l = theta[Order::lambda(q)];
     if (!(l >= lo && l <= hi)) return false;
@@ -68,7 +79,7 @@ bool plausible(const Order& order, const double* theta, const Eigen::ArrayXd& om
 }
 
 Simulation simulate(const Order& order, const Grid& grid, double noise_lo, double noise_hi, const PriorRanges& ranges,
-                    std::uint64_t seed, const SimulationFilter& accept) {
+                    std::uint64_t seed, const SimulationFilter& accept, const std::optional<PoleWindow>& window) {
   ADMITGEN_ENSURE(noise_lo > 0.0 && noise_hi >= noise_lo, "noise range [{}, {}]", noise_lo, noise_hi);
   Simulation sim;
   sim.order = order;
@@ -76,6 +87,7 @@ Simulation simulate(const Order& order, const Grid& grid, double noise_lo, doubl
   sim.data.path = fmt::format("simulated {} on {}", order.name(), grid.name);
   sim.data.f_hz = grid.f_hz();
   const Eigen::ArrayXd omega = sim.data.omega();
+  sim.window = window ? *window : band_window(omega);
   Rng rng(seed);
   const PriorTransform prior(order, ranges, false);
   Eigen::VectorXd u(order.dim()), theta(order.dim());
@@ -85,7 +97,7 @@ Simulation simulate(const Order& order, const Grid& grid, double noise_lo, doubl
     for (Eigen::Index k = 0; k < u.size(); ++k) u[k] = rng.uniform();
     prior(u.data(), theta.data());
     ++sim.prior_draws;
-  } while (!plausible(order, theta.data(), omega) || (accept && !accept(theta.data(), omega)));
+  } while (!plausible(order, theta.data(), omega, sim.window) || (accept && !accept(theta.data(), omega)));
   fold_to_reduced(order, theta.data());
   sim.theta = theta;
   Eigen::ArrayXd re, im;
@@ -111,7 +123,7 @@ Eigen::ArrayXd generative_weights(const Simulation& sim, double noise_lo, double
     const auto ii = static_cast<Eigen::Index>(i);
     if (w[ii] == 0.0) continue;
     const double* th = run.point(i);
-    if (!plausible(sim.order, th, omega)) {
+    if (!plausible(sim.order, th, omega, sim.window)) {
       w[ii] = 0.0;
       continue;
     }
@@ -177,7 +189,10 @@ SbcReplicate run_replicate(const SbcSettings& settings, int index, SamplerKind k
   const Order& order = settings.orders[static_cast<std::size_t>(index) % n_orders];
   const Grid& grid = settings.grids[(static_cast<std::size_t>(index) / n_orders) % settings.grids.size()];
   const PriorRanges priors = band_priors(grid, settings.base_priors);
-  const Simulation sim = simulate(order, grid, settings.noise_lo, settings.noise_hi, priors, seed);
+  // The band prior's R admits every pole of the prior (prior_window); Table 1's clipped prior keeps the band.
+  const std::optional<PoleWindow> window =
+      priors.residues == ResiduePrior::gaussian ? std::optional<PoleWindow>(prior_window(priors)) : std::nullopt;
+  const Simulation sim = simulate(order, grid, settings.noise_lo, settings.noise_hi, priors, seed, {}, window);
 
   FitSettings fit;
   fit.priors = priors;
@@ -204,7 +219,7 @@ SbcReplicate run_replicate(const SbcSettings& settings, int index, SamplerKind k
   r.ess = effective_sample_size(w);
   double outside = 0.0;
   for (std::size_t i = 0; i < model.run.size(); ++i)
-    if (fit_w[static_cast<Eigen::Index>(i)] > 0.0 && !plausible(order, model.run.point(i), sim.data.omega()))
+    if (fit_w[static_cast<Eigen::Index>(i)] > 0.0 && !plausible(order, model.run.point(i), sim.data.omega(), sim.window))
       outside += fit_w[static_cast<Eigen::Index>(i)];
   r.outside_mass = outside;
 

@@ -32,6 +32,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,18 @@ inline PriorRanges default_base_priors() { return PriorRanges::band(1.0); }
 constexpr double kMinAbsG = 0.01;
 constexpr double kMaxAbsG = 5.0;
 bool plausible(const Order& order, const double* theta, const Eigen::ArrayXd& omega);
+/// The natural frequencies R admits, [lo, hi] (rad/s).
+struct PoleWindow {
+  double lo = 0.0, hi = 0.0;
+};
+/// The grid's band: what plausible() above uses.
+PoleWindow band_window(const Eigen::ArrayXd& omega);
+/// Every natural frequency the prior holds, [0, max(λ_hi, |α_hi + jβ_hi|)]: R then restricts to passive models
+/// of bounded |G| only. SBC of the band prior uses it, whose poles reach 4 ω_max: with the band window most fits
+/// put a third of their mass on out-of-band poles that the reweighting to R discards (docs/validation.md,
+/// "Calibration").
+PoleWindow prior_window(const PriorRanges& priors);
+bool plausible(const Order& order, const double* theta, const Eigen::ArrayXd& omega, const PoleWindow& window);
 
 /// One simulated data set.
 struct Simulation {
@@ -78,6 +91,7 @@ struct Simulation {
   double noise = 0.0;     ///< c: complex noise std relative to rms|G(θ)| on the grid
   double sigma = 0.0;     ///< σ_c = c·rms|G(θ)|, the complex noise std
   long prior_draws = 0;   ///< prior draws until one was plausible
+  PoleWindow window;      ///< the natural frequencies R admitted
   Measurement data;
 };
 
@@ -87,7 +101,8 @@ struct Simulation {
 /// invariant under the label symmetries too).
 using SimulationFilter = std::function<bool(const double* theta, const Eigen::ArrayXd& omega)>;
 Simulation simulate(const Order& order, const Grid& grid, double noise_lo, double noise_hi,
-                    const PriorRanges& ranges, std::uint64_t seed, const SimulationFilter& accept = {});
+                    const PriorRanges& ranges, std::uint64_t seed, const SimulationFilter& accept = {},
+                    const std::optional<PoleWindow>& window = std::nullopt);  ///< default: the grid's band
 
 /// Posterior weights of the run's points under the generating model (see the file comment): the run's
 /// weights × 1_R(θ_i) × P(σ ∈ [noise_lo, noise_hi]·r(θ_i)/√2 | θ_i, D); normalised (sum 1). The run's θ
