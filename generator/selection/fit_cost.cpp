@@ -20,7 +20,7 @@ namespace {
 /// Evaluations per order / (live × dim × slices), from the bundled fits (fit_cost.hpp): the full sampler over
 /// θ, and the pole sampler over ψ (dim = Q + 2S).
 constexpr double kEvaluationsPerLiveDimSlice = 27.0;
-constexpr double kPoleEvaluationsPerLiveDimSlice = 20.0;
+constexpr double kPoleEvaluationsPerLiveDimSlice = 15.0;
 
 /// θ in the middle of every prior range (a valid point of any order: λ, α > 0).
 std::vector<double> prior_centre(const Order& order, const PriorRanges& priors) {

@@ -7,7 +7,8 @@
 /// were 15-51 × live × dim × (3 + dim) (the last factor is the slices per step, --slices), 19-36 × over a
 /// whole fit. The pole sampler (dim = Q + 2S) took 5-24 × live × dim × (3 + dim) on the reference file and
 /// Basotect round 10 cm (more for an over-complete order whose spare pair wanders, Q0S3 of the reference file 106);
-/// its estimate takes 20, and times the closed-form marginal instead of the likelihood. The full sampler's takes 27, so a whole fit's count is right within a factor ~2 on those fits;
+/// its estimate takes 15 (whole fits: the golden fit 0.55×, the reference grid at 500 live 1.7×, round 10 cm at 100
+/// live 1.2× of it), and times the closed-form marginal instead of the likelihood. The full sampler's takes 27, so a whole fit's count is right within a factor ~2 on those fits;
 /// missed-mode re-runs and the passive truncation come on top. One evaluation is timed here, at the largest order, on the data as read; it costs in
 /// proportion to points × (1 + Q + S).
 #pragma once

@@ -75,7 +75,7 @@ TEST_CASE("large inputs: the cost model matches the bundled fits within a factor
   // evaluation count over the same orders and live points must be within a factor 2 of their sum. (The
   // model's constant 27 was read off these fits, whose whole-fit ratios span 19-36: the test guards the
   // stated accuracy against a change of the sampler, not the constant's independence.) The bundled fits ran
-  // the full sampler; the golden fit (tests/golden/expected) runs the pole sampler, whose constant is 20.
+  // the full sampler; the golden fit (tests/golden/expected) runs the pole sampler, whose constant is 15.
   for (const auto* name : {"fits/q1s1_reference.json", "fits/basotect_round_10cm_passive/fit.json",
                            "synthetic/mpp_three_layer_fit/fit.json", "synthetic/glass_beads_40mm_fit/fit.json",
                            "golden"}) {
