@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "core/rng.hpp"
 #include "inference/pole_space.hpp"
+#include "inference/posterior.hpp"
 #include "inference/residue_evidence.hpp"
 
 #include <algorithm>
@@ -58,6 +59,7 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
   run.dim = order.dim();
   run.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
   const Likelihood likelihood(data, order, count);
+  const Eigen::ArrayXd weight = posterior_weights(poles);
   Rng rng(draw_seed);
   double best = -std::numeric_limits<double>::infinity();
   std::vector<double> best_theta;
@@ -74,7 +76,10 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
       best_theta.assign(static_cast<std::size_t>(order.dim()), 0.0);
       assemble_theta(order, psi, least_squares_residues(c), best_theta.data());
     }
-    assemble_theta(order, psi, draw_residues(c, rng), theta);
+    // Points whose posterior share is below kNegligibleShare/n (together at most kNegligibleShare of the posterior:
+    // early dead points) keep their least-squares residues instead of a draw; no summary can see them.
+    const bool negligible = weight[static_cast<Eigen::Index>(i)] < kNegligibleShare / static_cast<double>(poles.size());
+    assemble_theta(order, psi, negligible ? least_squares_residues(c) : draw_residues(c, rng), theta);
     run.log_likelihood[i] = likelihood(theta);
   }
   if (!best_theta.empty()) {

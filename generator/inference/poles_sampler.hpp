@@ -26,4 +26,8 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
                             bool reduce_symmetry, DataCount count, const NestedSettings& settings,
                             std::uint64_t draw_seed, const NestedProgressFn& progress = {});
 
+/// Points of a run whose posterior share is below this over the number of points keep their least-squares
+/// residues instead of a draw from the conditional (together at most this share of the posterior).
+constexpr double kNegligibleShare = 1e-6;
+
 }  // namespace admitgen
