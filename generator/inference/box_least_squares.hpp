@@ -1,21 +1,21 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// The minimum of a positive definite quadratic over a box, for the box-mass bound of the pole sampler
-/// (docs/method.md, "The box mass the sampler uses").
+/// The minimum of a positive definite quadratic over a box: the least-squares residues inside the uniform prior's
+/// box, for the missed-mode check by reduced models under `--prior table1` (selection/reduced_model.hpp;
+/// docs/method.md, "Residues given the poles").
 ///
 /// Minimises (x − c)ᵀ M (x − c) over lo ≤ x ≤ hi by a primal active-set method (Nocedal & Wright,
 /// Numerical Optimization, 2nd ed., §16.5): from c clamped to the box, each step solves for the free
 /// coordinates with the bound ones fixed, walks towards that solution until a bound blocks (the blocking
 /// coordinate joins the bound set), and at a stationary point frees the bound coordinate whose
 /// multiplier has the wrong sign. The objective never increases and the iterate always lies in the box,
-/// so stopping at the iteration cap still returns an admissible point (the caller's bound is valid for
-/// any point of the box; only its tightness needs the true minimiser).
+/// so stopping at the iteration cap still returns an admissible point.
 ///
 /// No Debian package offers a bounded least-squares or box-QP solver for C++ (Eigen has none; qpOASES,
 /// OSQP and eiquadprog are not packaged), and p ≤ 10 here, so the method is written out. The project's
 /// general solver, numerics/least_squares_inequality.hpp (LSI through NNLS, Lawson & Hanson), solves the same
 /// problem with G = [I; −I], h = [lo; −hi], but through the dual: its iterates need not lie in the box when
-/// it stops early, and it costs an NNLS of 2p constraints per call on the likelihood's hot path.
+/// it stops early.
 #pragma once
 
 #include <Eigen/Core>
