@@ -9,15 +9,20 @@
 #       (those whose folder exists under <source-dir>), and for each layer L
 #       ADMITGEN_LAYER_<L>_PUBLIC / ADMITGEN_LAYER_<L>_PRIVATE (lists of layers or "runtime").
 #
-#   admitgen_add_layer_libraries(<suffix> <include-root>)   (build only)
+#   admitgen_add_layer_libraries(<suffix> <include-root> [COMPILE_OPTIONS <flag>...] [LINK_OPTIONS <flag>...])
 #       One library admitgen_layer_<L><suffix> per present layer, linked to the libraries of the
 #       layers it may use, PUBLIC or PRIVATE as declared, and an INTERFACE aggregate
 #       admitgen_core<suffix> over all of them. A layer's include directory is <include-root>/<L>, which
 #       holds a single link <L> -> generator/<L>: `#include "L/x.hpp"` resolves only in a target that
 #       links admitgen_layer_<L>, so an include of a layer that is not below fails to compile.
+#       COMPILE_OPTIONS and LINK_OPTIONS are flags of the whole set and of everything that
+#       links it (the sanitizers), carried by the INTERFACE target admitgen_flags<suffix>.
 #       Per layer, the caller may set ADMITGEN_LAYER_<L>_EXTRA_SOURCES (generated sources),
-#       ADMITGEN_LAYER_<L>_EXTRA_INCLUDES, ADMITGEN_LAYER_<L>_EXTRA_LIBS (PUBLIC) and
-#       ADMITGEN_LAYER_<L>_EXCLUDE (a regex of sources left out, e.g. an executable's main).
+#       ADMITGEN_LAYER_<L>_EXTRA_INCLUDES, ADMITGEN_LAYER_<L>_EXTRA_LIBS (PUBLIC),
+#       ADMITGEN_LAYER_<L>_EXCLUDE (a regex of sources left out, e.g. an executable's main) and
+#       ADMITGEN_LAYER_<L>_UNITY_BATCH (with ADMITGEN_UNITY_BUILD, a unity build of the layer, this many
+#       sources per unit). The libraries are EXCLUDE_FROM_ALL: a build compiles the layers that what it
+#       builds links (the default build: the CLI's). Build cost: docs/building.md, "Where build time goes".
 #
 #   admitgen_link_as_layer_source(<target> <layer> <suffix>)   (build only)
 #       Links <target> as if its sources were sources of <layer>: the layer's library and its private
@@ -92,8 +97,13 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
   endfunction()
 
   function(admitgen_add_layer_libraries suffix include_root)
+    cmake_parse_arguments(ARG "" "" "COMPILE_OPTIONS;LINK_OPTIONS" ${ARGN})
     set(aggregate admitgen_core${suffix})
     add_library(${aggregate} INTERFACE)
+    set(flags admitgen_flags${suffix})
+    add_library(${flags} INTERFACE)
+    target_compile_options(${flags} INTERFACE ${ARG_COMPILE_OPTIONS})
+    target_link_options(${flags} INTERFACE ${ARG_LINK_OPTIONS})
     foreach(layer IN LISTS ADMITGEN_PRESENT_LAYERS)
       set(target admitgen_layer_${layer}${suffix})
       file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.cpp)
@@ -104,17 +114,21 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
       admitgen_layer_targets(public_targets "${suffix}" ${ADMITGEN_LAYER_${layer}_PUBLIC})
       admitgen_layer_targets(private_targets "${suffix}" ${ADMITGEN_LAYER_${layer}_PRIVATE})
       if(sources)
-        add_library(${target} STATIC ${sources})
+        add_library(${target} STATIC EXCLUDE_FROM_ALL ${sources})
         admitgen_warnings(${target})
         set(usage PUBLIC)
         target_link_libraries(${target} PRIVATE ${private_targets})
+        if(ADMITGEN_UNITY_BUILD AND ADMITGEN_LAYER_${layer}_UNITY_BATCH)
+          set_target_properties(${target} PROPERTIES UNITY_BUILD ON
+                                UNITY_BUILD_BATCH_SIZE ${ADMITGEN_LAYER_${layer}_UNITY_BATCH})
+        endif()
       else()  # headers only: nothing is private
         add_library(${target} INTERFACE)
         set(usage INTERFACE)
         list(APPEND public_targets ${private_targets})
       endif()
       target_include_directories(${target} ${usage} ${include_root}/${layer} ${ADMITGEN_LAYER_${layer}_EXTRA_INCLUDES})
-      target_link_libraries(${target} ${usage} ${public_targets} Eigen3::Eigen nlohmann_json::nlohmann_json fmt::fmt
+      target_link_libraries(${target} ${usage} ${flags} ${public_targets} Eigen3::Eigen nlohmann_json::nlohmann_json fmt::fmt
                                                OpenSSL::Crypto Threads::Threads ${ADMITGEN_LAYER_${layer}_EXTRA_LIBS})
       target_link_libraries(${aggregate} INTERFACE ${target})
     endforeach()
