@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// Order recovery (docs/validation.md, "Order recovery"): data simulated from a known order (validation/
-/// calibration.hpp simulate: plausible draws from band_priors, fixed relative noise), fitted over the whole
-/// grid by run_fit as `fit` does (with the same priors), the selected order against the truth.
+/// calibration.hpp simulate: plausible draws from Table 1 clipped to the band, band_priors(grid, table1), fixed
+/// relative noise), fitted over the whole grid by run_fit as `fit` does with the priors under test (base_priors),
+/// the selected order against the truth.
 ///
 /// Identifiability of the truth. Its competitors are the orders of the fitted grid that cannot represent
 /// it (Q' < Q or S' < S) with at most as many terms (Q' + S' ≤ Q + S): the orders one term smaller, and
@@ -61,7 +62,7 @@ struct RecoverySettings {
   RecoveryDesign design = RecoveryDesign::prior;
   std::uint64_t seed = 1;
   int threads = 0;
-  PriorRanges base_priors = default_base_priors();  ///< made the grid's prior by band_priors, for truths and fits
+  PriorRanges base_priors = default_base_priors();  ///< made the grid's prior by band_priors, for the fits
   /// Data set indices to run (empty: all). Index i = (truth t, noise k, replicate r) with
   /// i = (t·|noise| + k)·per_cell + r; its seed depends on i and the seed only, so one set can be re-run alone.
   std::vector<int> cases;
