@@ -109,24 +109,23 @@ void print_sbc(const SbcSettings& st, const std::vector<SbcReplicate>& reps, con
   // Per sampler: fallbacks, mass outside R, ESS.
   std::map<std::string, std::vector<const SbcReplicate*>> by;
   for (const auto& r : reps) by[r.sampler].push_back(&r);
-  fmt::print("\n{:<7} {:>10} {:>14} {:>12} {:>16} {:>12} {:>16}\n", "sampler", "replicates", "ran full", "box sampled",
-             "mass outside R", "min ESS", "passive changed");
+  fmt::print("\n{:<7} {:>10} {:>14} {:>16} {:>12} {:>16}\n", "sampler", "replicates", "ran full", "mass outside R",
+             "min ESS", "passive changed");
   for (const auto& [name, list] : by) {
-    int fell = 0, boxed = 0, changed = 0;
+    int fell = 0, changed = 0;
     double outside = 0.0, min_ess = 1e300;
     for (const auto* r : list) {
       fell += r->sampler != "full" && r->sampler_used == "full";
-      boxed += r->sampler_used == "poles_box_mass_sampled";
       changed += r->passive_changed;
       outside += r->outside_mass;
       min_ess = std::min(min_ess, r->ess);
     }
-    fmt::print("{:<7} {:>10} {:>14} {:>12} {:>16.4f} {:>12.0f} {:>16}\n", name, list.size(), fell, boxed,
+    fmt::print("{:<7} {:>10} {:>14} {:>16.4f} {:>12.0f} {:>16}\n", name, list.size(), fell,
                outside / static_cast<double>(list.size()), min_ess, changed);
   }
   fmt::print("(mass outside R: mean posterior mass of the fit outside the plausible set, removed by the exact "
-             "reweighting; ran full: the pole sampler ran the full sampler (passive sampling); box sampled: its box "
-             "correction was not accurate and the order was re-run with the box mass sampled)\n\n");
+             "reweighting; ran full: the pole sampler was asked for and the full sampler ran, selection/fit.hpp "
+             "order_sampler)\n\n");
 }
 
 // ---- order recovery ----------------------------------------------------------------------------------------
@@ -230,7 +229,7 @@ void print_recovery(const RecoverySettings& st, const std::vector<RecoveryCase>&
       fallbacks += c.fallbacks;
     }
     fmt::print("{}: identifiable {}/{} correct ({:.1f} %; acceptance >= 90 %), unidentifiable cases more than one term "
-               "above the truth: {} (acceptance 0); orders re-run with the box mass sampled: {}\n",
+               "above the truth: {} (acceptance 0); orders that ran the full sampler instead: {}\n",
                sampler, ci, ni, ni ? 100.0 * ci / ni : 0.0, more, fallbacks);
   }
 }
