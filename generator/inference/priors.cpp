@@ -30,8 +30,6 @@ void sort_real_poles(const Order& order, double* v) {
   }
 }
 
-bool is_residue(Family f) { return f == Family::g_inf || f == Family::a || f == Family::b || f == Family::c; }
-
 /// Φ⁻¹(u), the standard normal quantile; u is kept inside (0, 1) so that θ stays finite.
 double normal_quantile(double u) {
   const double v = std::clamp(u, 1e-300, 1.0 - 0x1.0p-53);

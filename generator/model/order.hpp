@@ -16,6 +16,9 @@ namespace admitgen {
 /// The family a parameter belongs to; its prior range is set per family.
 enum class Family { g_inf, a, lambda, b, c, alpha, beta };
 
+/// The linear parameters (residues): G∞, A, B, C; the others are poles.
+constexpr bool is_residue(Family f) { return f == Family::g_inf || f == Family::a || f == Family::b || f == Family::c; }
+
 class Order {
  public:
   static constexpr int kMaxPoles = 16;  ///< per kind; far above any useful order

@@ -2,6 +2,8 @@
 #include "selection/prior_edge.hpp"
 
 #include "core/errors.hpp"
+#include "inference/pole_space.hpp"
+#include "model/residue_basis.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -12,27 +14,16 @@ namespace admitgen {
 
 namespace {
 
-bool is_residue(Family f) { return f == Family::g_inf || f == Family::a || f == Family::b || f == Family::c; }
-
 /// Under the Gaussian residue prior: the residues whose posterior mean lies beyond kPriorTailSds prior standard
 /// deviations (at the posterior mean of the poles): the admittance scale, not the data, holds them back.
 std::vector<std::string> residues_in_prior_tail(const ModelResult& model, const PriorRanges& priors) {
   const Order& o = model.order;
   if (model.parameters.size() != static_cast<std::size_t>(o.dim())) return {};
   std::vector<double> poles;
-  for (int q = 0; q < o.q(); ++q) poles.push_back(model.parameters[static_cast<std::size_t>(Order::lambda(q))].mean);
-  for (int s = 0; s < o.s(); ++s) {
-    poles.push_back(model.parameters[static_cast<std::size_t>(o.alpha(s))].mean);
-    poles.push_back(model.parameters[static_cast<std::size_t>(o.beta(s))].mean);
-  }
-  std::vector<double> sd(static_cast<std::size_t>(1 + o.q() + 2 * o.s()));
+  for (int i : pole_indices(o)) poles.push_back(model.parameters[static_cast<std::size_t>(i)].mean);
+  const std::vector<int> at = residue_indices(o);
+  std::vector<double> sd(at.size());
   gaussian_residue_scales(o, poles.data(), priors.admittance_scale, sd.data());
-  std::vector<int> at{Order::g_inf()};
-  for (int q = 0; q < o.q(); ++q) at.push_back(Order::a(q));
-  for (int s = 0; s < o.s(); ++s) {
-    at.push_back(o.b(s));
-    at.push_back(o.c(s));
-  }
   std::vector<std::string> out;
   for (std::size_t k = 0; k < at.size(); ++k) {
     const ParameterSummary& p = model.parameters[static_cast<std::size_t>(at[k])];
