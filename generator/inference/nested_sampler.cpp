@@ -137,10 +137,17 @@ class Compression {
 /// from a live point reaches wherever live points are. Within one cluster they serve while their
 /// likelihood calls per replacement since the last covariance update stay below a slice chain's running
 /// mean (counting the draws that missed the contour, and the slice chain after a replacement that found
-/// nothing within a slice chain's calls). Where the contour is nearly ellipsoidal one or two calls replace
+/// nothing within a slice chain's calls). Draws rejected without a call (outside the cube or the canonical
+/// domain of a folded model, which can be most of an ellipsoid that straddles a fold's seam) are counted
+/// too, kDrawsPerCall of them as one call. Where the contour is nearly ellipsoidal one or two calls replace
 /// 3 + dim slices; where it is far from it, slices serve (docs/method.md, "Sampler and evidence error").
 class Replacement {
  public:
+  /// Rejected draws (normal deviates, a triangular product, the fold) that cost as much as one likelihood
+  /// call: a call at the smallest data sets here (60 points, 3 residues) takes about 20 times a draw at
+  /// dim 12; larger data make calls dearer, so this undercounts the calls' share, never the draws'.
+  static constexpr long kDrawsPerCall = 20;
+
   Replacement(const Model& model, const NestedSettings& settings)
       : model_(model),
         n_(settings.live),
@@ -160,16 +167,23 @@ class Replacement {
     constexpr int kMaxClusters = 8;
     if (iteration % cov_interval_ == 0) {
       clusters_ = cluster_live_points(live.u, min_cluster_, kMaxClusters);
+      // Each cluster's slice width starts from the previous update's widths (their geometric mean over
+      // clusters: new clusters need not match old ones) and adapts on its own.
+      double log_mean = 0.0;
+      for (double w : slice_widths_) log_mean += std::log(w);
+      const double start = slice_widths_.empty() ? 1.0 : std::exp(log_mean / static_cast<double>(slice_widths_.size()));
+      slice_widths_.assign(clusters_.axes.size(), start);
       if (ellipsoid_draws_ && clusters_.axes.size() == 1) {
         bounds_.emplace(live.u, clusters_, enlarge_);
-        bound_calls_ = bound_draws_ = 0;
+        bound_cost_ = 0.0;
+        bound_draws_ = 0;
       } else {
         bounds_.reset();
       }
     }
     int cluster = 0;
     double log_l = 0.0;
-    const bool bounded = bounds_ && static_cast<double>(bound_calls_) <= slice_calls_ * static_cast<double>(bound_draws_ + 1);
+    const bool bounded = bounds_ && bound_cost_ <= slice_calls_ * static_cast<double>(bound_draws_ + 1);
     if (!bounded || !draw_from_bounds(live.log_l[worst], rng, run, cluster, log_l)) {
       Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n_ - 1)));
       if (start >= worst) ++start;
@@ -177,11 +191,11 @@ class Replacement {
       u_ = live.u.col(start);
       theta_ = live.theta.col(start);
       log_l = live.log_l[start];
-      step_.set_axes(clusters_.axes[static_cast<std::size_t>(cluster)]);
+      step_.set_axes(clusters_.axes[static_cast<std::size_t>(cluster)], slice_widths_[static_cast<std::size_t>(cluster)]);
       const long calls = step_.move(u_, theta_, log_l, live.log_l[worst], slices_, rng);
       run.calls += calls;
       slice_calls_ = 0.9 * slice_calls_ + 0.1 * static_cast<double>(calls);
-      if (bounded) bound_calls_ += calls;  // the ellipsoids missed: their replacement cost these too
+      if (bounded) bound_cost_ += static_cast<double>(calls);  // the ellipsoids missed: their replacement cost these too
       if (model_.fold) {
         model_.fold(u_.data());
         model_.prior_transform(u_.data(), theta_.data());  // same ln L: the likelihood is invariant
@@ -197,12 +211,12 @@ class Replacement {
   /// Draws from the ellipsoids until a point of the canonical domain lies above the contour: true, with
   /// (u_, theta_, log_l) set. A draw outside the unit cube or off the canonical domain (the fold's fixed
   /// points; folding it instead would double the density where an ellipsoid crosses a seam) is rejected
-  /// without a likelihood call. Gives up after a slice chain's mean calls or 1000 times as many draws.
+  /// without a likelihood call. Gives up after a slice chain's mean calls or kDrawsPerCall times as many draws.
   bool draw_from_bounds(double log_l_min, Rng& rng, NestedRun& run, int& cluster, double& log_l) {
-    const long max_calls = std::max(1L, std::lround(slice_calls_)), max_draws = 1000L * max_calls;
-    long calls = 0;
+    const long max_calls = std::max(1L, std::lround(slice_calls_)), max_draws = kDrawsPerCall * max_calls;
+    long calls = 0, draws = 0;
     bool found = false;
-    for (long draws = 0; draws < max_draws && calls < max_calls && !found; ++draws) {
+    for (; draws < max_draws && calls < max_calls && !found; ++draws) {
       if (!bounds_->draw(rng, u_, cluster)) continue;
       if ((u_.array() < 0.0).any() || (u_.array() >= 1.0).any()) continue;
       if (model_.fold) {
@@ -216,7 +230,7 @@ class Replacement {
       found = log_l > log_l_min;
     }
     run.calls += calls;
-    bound_calls_ += calls;
+    bound_cost_ += static_cast<double>(calls) + static_cast<double>(draws - calls) / kDrawsPerCall;
     ++bound_draws_;
     return found;
   }
@@ -226,8 +240,10 @@ class Replacement {
   bool ellipsoid_draws_;
   double enlarge_;
   double slice_calls_;            ///< running mean of a slice chain's likelihood calls
-  long bound_calls_ = 0, bound_draws_ = 0;  ///< ellipsoid calls and replacements since the last update
+  double bound_cost_ = 0.0;  ///< ellipsoid calls (rejected draws weighted by 1/kDrawsPerCall) since the last update
+  long bound_draws_ = 0;     ///< replacements by the ellipsoids since the last update
   SliceStep step_;
+  std::vector<double> slice_widths_;  ///< per cluster (inference/slice_step.hpp)
   LivePointClusters clusters_;
   std::optional<EllipsoidUnion> bounds_;
   Eigen::VectorXd u_, theta_, folded_;

@@ -4,6 +4,8 @@
 #include "core/errors.hpp"
 
 #include <algorithm>
+#include <array>
+#include <complex>
 
 // One clone per instruction set, chosen by the dynamic loader (GCC and Clang function multi-versioning).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(ADMITGEN_NO_MULTIVERSIONING)
@@ -14,6 +16,122 @@
 
 namespace admitgen {
 
+namespace {
+
+using Complex = std::complex<double>;
+
+/// Most distinct poles: every residue but G∞'s.
+constexpr int kMaxPoles = kMaxGramResidues - 1;
+
+/// Per-lane partial sums of the pass: T_a = Σ z_a and h_a = Σ conj(z_a) b for each pole a, and Σ b.
+struct PoleSums {
+  double* t_re;
+  double* t_im;
+  double* h_re;
+  double* h_im;
+  double* b_sum;  ///< re then im, L lanes each
+};
+
+PoleSums pole_sums(double* work, int poles) {
+  const int L = kGramLanes;
+  return {work, work + poles * L, work + 2 * poles * L, work + 3 * poles * L, work + 4 * poles * L};
+}
+
+/// Adds one pole's z_a = 1/(P_a + jω) over every point into the lane sums of T_a and h_a (the lanes are
+/// local arrays of kGramLanes doubles: registers, not memory, in the loop).
+struct LaneSums {
+  alignas(64) double t_re[kGramLanes] = {}, t_im[kGramLanes] = {}, h_re[kGramLanes] = {}, h_im[kGramLanes] = {};
+  void add(int l, double zr, double zi, double b_re, double b_im) {
+    t_re[l] += zr;
+    t_im[l] += zi;
+    // conj(z) b = (zr − j zi)(b_re + j b_im)
+    h_re[l] += zr * b_re + zi * b_im;
+    h_im[l] += zr * b_im - zi * b_re;
+  }
+  void store(const PoleSums& sums, int a) const {
+    for (int l = 0; l < kGramLanes; ++l) {
+      sums.t_re[a * kGramLanes + l] = t_re[l];
+      sums.t_im[a * kGramLanes + l] = t_im[l];
+      sums.h_re[a * kGramLanes + l] = h_re[l];
+      sums.h_im[a * kGramLanes + l] = h_im[l];
+    }
+  }
+};
+
+/// The pass over the points, pole by pole: z_a(ω) = 1/(P_a + jω) for every pole (one division per real
+/// pole, one per pair, as model/multipole.hpp) and the sums of PoleSums, each lane summing the points
+/// i ≡ l mod kGramLanes. Padding points carry weight 0 (GramPoints::mask) and zero data.
+ADMITGEN_GRAM_CLONES
+void sum_over_points(const GramPoints& points, int q, int s, const double* poles, double* work) {
+  constexpr int L = kGramLanes;
+  const PoleSums sums = pole_sums(work, q + 2 * s);
+  const Eigen::Index padded = points.padded();
+  const double* w = points.omega();
+  const double* w2 = points.omega2();
+  const double* mask = points.mask();
+  const double* b_re = points.b_re();
+  const double* b_im = points.b_im();
+  //   1/(λ + jω) = (λ − jω)/d,  d = λ² + ω²;
+  //   1/(α + j(ω ± β)) = (α − j(ω ± β))/d±,  d± = α² + (ω ± β)²,  1/d+ = d−/(d+ d−),  1/d− = d+/(d+ d−).
+  for (int j = 0; j < q; ++j) {
+    const double lam = poles[j], lam2 = lam * lam;
+    LaneSums acc;
+    for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
+      for (int l = 0; l < L; ++l) {
+        const Eigen::Index i = i0 + l;
+        const double inv = mask[i] / (lam2 + w2[i]);
+        acc.add(l, lam * inv, -w[i] * inv, b_re[i], b_im[i]);
+      }
+    acc.store(sums, j);
+  }
+  for (int j = 0; j < s; ++j) {
+    const double al = poles[q + 2 * j], be = poles[q + 2 * j + 1], al2 = al * al;
+    LaneSums plus, minus;
+    for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
+      for (int l = 0; l < L; ++l) {
+        const Eigen::Index i = i0 + l;
+        const double wp = w[i] + be, wm = w[i] - be;
+        const double d_plus = al2 + wp * wp, d_minus = al2 + wm * wm;
+        const double inv = mask[i] / (d_plus * d_minus);
+        const double dp = d_minus * inv, dm = d_plus * inv;
+        plus.add(l, al * dp, -wp * dp, b_re[i], b_im[i]);
+        minus.add(l, al * dm, -wm * dm, b_re[i], b_im[i]);
+      }
+    plus.store(sums, q + 2 * j);
+    minus.store(sums, q + 2 * j + 1);
+  }
+  alignas(64) double b_sum_re[L] = {}, b_sum_im[L] = {};
+  for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
+    for (int l = 0; l < L; ++l) {
+      b_sum_re[l] += b_re[i0 + l];
+      b_sum_im[l] += b_im[i0 + l];
+    }
+  for (int l = 0; l < L; ++l) sums.b_sum[l] = b_sum_re[l], sums.b_sum[L + l] = b_sum_im[l];
+}
+
+double lane_sum(const double* x) {
+  double t = 0.0;
+  for (int l = 0; l < kGramLanes; ++l) t += x[l];  // lanes combined in a fixed order
+  return t;
+}
+
+/// How residue u enters the pole functions: G = Σ_u r_u Σ_(a, κ) κ z_a (z_0 = 1 for G∞). B_s puts 1 on
+/// θ_s and on θ_s*, C_s puts j on θ_s and −j on θ_s* (model/residue_basis.hpp); the others one 1.
+struct Loading {
+  int count;
+  std::array<int, 2> pole;
+  std::array<Complex, 2> weight;
+};
+
+Loading loading(int u, int q) {
+  if (u <= q) return {1, {u, 0}, {Complex(1.0, 0.0), Complex()}};
+  const int first = q + 1 + 2 * ((u - q - 1) / 2);  // z index of θ_s; θ_s* follows
+  if ((u - q - 1) % 2 == 0) return {2, {first, first + 1}, {Complex(1.0, 0.0), Complex(1.0, 0.0)}};
+  return {2, {first, first + 1}, {Complex(0.0, 1.0), Complex(0.0, -1.0)}};
+}
+
+}  // namespace
+
 GramPoints::GramPoints(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& data) : n_(omega.size()) {
   ADMITGEN_ENSURE(n_ > 0 && data.size() == n_, "{} frequencies for {} data", n_, data.size());
   const Eigen::Index padded = (n_ + kGramLanes - 1) / kGramLanes * kGramLanes;
@@ -22,78 +140,64 @@ GramPoints::GramPoints(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& data)
     const Eigen::Index k = std::min(i, n_ - 1);
     omega_.push_back(omega[k]);
     omega2_.push_back(omega[k] * omega[k]);
+    mask_.push_back(i < n_ ? 1.0 : 0.0);
     b_re_.push_back(i < n_ ? data[i].real() : 0.0);
     b_im_.push_back(i < n_ ? data[i].imag() : 0.0);
   }
 }
 
 std::size_t residue_gram_work_size(int p) {
-  return static_cast<std::size_t>(p * (p + 1) / 2 + p) * kGramLanes;
+  return static_cast<std::size_t>(4 * (p - 1) + 2) * kGramLanes;
 }
 
-ADMITGEN_GRAM_CLONES
 void residue_gram(const GramPoints& points, int q, int s, const double* poles, double* work, double* m, double* g) {
-  constexpr int L = kGramLanes;
-  const int p = 1 + q + 2 * s;
+  const int p = 1 + q + 2 * s, poles_count = q + 2 * s;
   ADMITGEN_ENSURE(p <= kMaxGramResidues, "{} residues", p);
-  const int pairs = p * (p + 1) / 2;
-  double* __restrict acc = work;              // M's lower triangle, row by row, L partial sums each
-  double* __restrict g_acc = work + pairs * L;  // g, L partial sums each
-  std::fill(work, work + (pairs + p) * L, 0.0);
-  alignas(64) double re[kMaxGramResidues][L], im[kMaxGramResidues][L];
-  for (int l = 0; l < L; ++l) re[0][l] = 1.0, im[0][l] = 0.0;  // G∞
-  const Eigen::Index n = points.size(), padded = points.padded();
-  for (Eigen::Index i0 = 0; i0 < padded; i0 += L) {
-    const double* w = points.omega() + i0;
-    const double* w2 = points.omega2() + i0;
-    // Basis values (the arithmetic of model/multipole.hpp, one division per term):
-    //   1/(λ + jω) = (λ − jω)/d,  d = λ² + ω²
-    //   φ_B = α/d+ + α/d− − j[(ω+β)/d+ + (ω−β)/d−],  φ_C = (ω+β)/d+ − (ω−β)/d− + jα(1/d+ − 1/d−),
-    //   d± = α² + (ω ± β)², 1/d+ = d−/(d+ d−), 1/d− = d+/(d+ d−).
-    int k = 1;
-    for (int j = 0; j < q; ++j, ++k) {
-      const double lam = poles[j], lam2 = lam * lam;
-      for (int l = 0; l < L; ++l) {
-        const double inv = 1.0 / (lam2 + w2[l]);
-        re[k][l] = lam * inv;
-        im[k][l] = -w[l] * inv;
-      }
-    }
-    for (int j = 0; j < s; ++j, k += 2) {
-      const double al = poles[q + 2 * j], be = poles[q + 2 * j + 1], al2 = al * al;
-      for (int l = 0; l < L; ++l) {
-        const double wp = w[l] + be, wm = w[l] - be;
-        const double d_plus = al2 + wp * wp, d_minus = al2 + wm * wm;
-        const double inv = 1.0 / (d_plus * d_minus);
-        const double dp = d_minus * inv, dm = d_plus * inv;
-        re[k][l] = al * (dp + dm);
-        im[k][l] = -(wp * dp + wm * dm);
-        re[k + 1][l] = wp * dp - wm * dm;
-        im[k + 1][l] = al * (dp - dm);
-      }
-    }
-    if (i0 + L > n)  // the last block: padding lanes contribute nothing
-      for (int j = 0; j < p; ++j)
-        for (int l = static_cast<int>(n - i0); l < L; ++l) re[j][l] = im[j][l] = 0.0;
-    const double* b_re = points.b_re() + i0;
-    const double* b_im = points.b_im() + i0;
-    double* a = acc;
-    for (int j = 0; j < p; ++j) {
-      for (int c = 0; c <= j; ++c, a += L)
-        for (int l = 0; l < L; ++l) a[l] += re[j][l] * re[c][l] + im[j][l] * im[c][l];
-      for (int l = 0; l < L; ++l) g_acc[j * L + l] += re[j][l] * b_re[l] + im[j][l] * b_im[l];
-    }
+  sum_over_points(points, q, s, poles, work);
+  const PoleSums sums = pole_sums(work, poles_count);
+  // Pole functions z_0 = 1, z_a = 1/(P_a + jω): P of each, T_a = Σ z_a, h_a = Σ conj(z_a) b.
+  std::array<Complex, kMaxGramResidues> pole{}, t{}, h{};
+  t[0] = Complex(static_cast<double>(points.size()), 0.0);
+  h[0] = Complex(lane_sum(sums.b_sum), lane_sum(sums.b_sum + kGramLanes));
+  for (int j = 0; j < q; ++j) pole[static_cast<std::size_t>(1 + j)] = Complex(poles[j], 0.0);
+  for (int j = 0; j < s; ++j) {
+    const double al = poles[q + 2 * j], be = poles[q + 2 * j + 1];
+    pole[static_cast<std::size_t>(1 + q + 2 * j)] = Complex(al, be);
+    pole[static_cast<std::size_t>(2 + q + 2 * j)] = Complex(al, -be);
   }
-  // Lanes combined in a fixed order.
-  const auto lane_sum = [](const double* x) {
-    double t = 0.0;
-    for (int l = 0; l < L; ++l) t += x[l];
-    return t;
+  for (int a = 0; a < poles_count; ++a) {
+    const std::size_t k = static_cast<std::size_t>(1 + a);
+    t[k] = Complex(lane_sum(sums.t_re + a * kGramLanes), lane_sum(sums.t_im + a * kGramLanes));
+    h[k] = Complex(lane_sum(sums.h_re + a * kGramLanes), lane_sum(sums.h_im + a * kGramLanes));
+  }
+  // H_ab = Σ conj(z_a) z_b. By partial fractions (docs/method.md, "Residues given the poles"):
+  //   conj(z_a) z_b = 1/((P̄_a − jω)(P_b + jω)) = [1/(P̄_a − jω) + 1/(P_b + jω)]/(P̄_a + P_b),
+  // so H_ab = (conj T_a + T_b)/(P̄_a + P_b), Re(P̄_a + P_b) > 0; H_0b = T_b, H_00 = N.
+  const auto gram = [&](int a, int b) -> Complex {
+    const std::size_t i = static_cast<std::size_t>(a), k = static_cast<std::size_t>(b);
+    if (a == 0) return t[k];
+    if (b == 0) return std::conj(t[i]);
+    // Division by c = P̄_a + P_b as multiplication by c̄/|c|² (c is never tiny, never infinite: no need of the
+    // scaled complex division of C99 Annex G).
+    const Complex c = std::conj(pole[i]) + pole[k];
+    return (std::conj(t[i]) + t[k]) * std::conj(c) / std::norm(c);
   };
-  const double* a = acc;
-  for (int j = 0; j < p; ++j) {
-    for (int c = 0; c <= j; ++c, a += L) m[j + c * p] = m[c + j * p] = lane_sum(a);
-    g[j] = lane_sum(g_acc + j * L);
+  // M_uv = Re Σ conj(κ_u) κ_v H_ab and g_u = Re Σ conj(κ_u) h_a over the loadings of u and v.
+  for (int u = 0; u < p; ++u) {
+    const Loading lu = loading(u, q);
+    Complex gu;
+    for (int i = 0; i < lu.count; ++i) gu += std::conj(lu.weight[static_cast<std::size_t>(i)]) *
+                                            h[static_cast<std::size_t>(lu.pole[static_cast<std::size_t>(i)])];
+    g[u] = gu.real();
+    for (int v = 0; v <= u; ++v) {
+      const Loading lv = loading(v, q);
+      Complex muv;
+      for (int i = 0; i < lu.count; ++i)
+        for (int k = 0; k < lv.count; ++k)
+          muv += std::conj(lu.weight[static_cast<std::size_t>(i)]) * lv.weight[static_cast<std::size_t>(k)] *
+                 gram(lu.pole[static_cast<std::size_t>(i)], lv.pole[static_cast<std::size_t>(k)]);
+      m[u + v * p] = m[v + u * p] = muv.real();
+    }
   }
 }
 

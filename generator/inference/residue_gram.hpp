@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// The normal equations of the residues in one fused pass over the frequency points (docs/method.md,
-/// "Residues given the poles", and "Status of the pole sampler" on its cost): with A = [Re Φ; Im Φ] and
-/// b = [Re D; Im D],
-///   M = AᵀA = Σ_i (Re φ(ω_i) Re φ(ω_i)ᵀ + Im φ(ω_i) Im φ(ω_i)ᵀ),   g = Aᵀb,
-/// the basis values φ(ω_i) (model/residue_basis.hpp) computed per block of kGramLanes points and added
-/// into per-lane partial sums at once, so A is never stored (it does not fit in L1 for 1000 points).
+/// The normal equations of the residues (docs/method.md, "Residues given the poles", which derives the
+/// partial fractions used here): with A = [Re Φ; Im Φ] and b = [Re D; Im D],
+///   M = AᵀA,   g = Aᵀb,
+/// from the sums T_a = Σ_i z_a(ω_i) and h_a = Σ_i conj z_a(ω_i) D_i of the pole functions
+/// z_a = 1/(P_a + jω) over the Q + 2S poles: Σ_i conj z_a z_b = (conj T_a + T_b)/(P̄_a + P_b). One pass over
+/// the points per pole, O(N (Q + 2S)), instead of forming AᵀA, O(N p²); A is never stored.
 ///
 /// Runtime SIMD dispatch: the pass is compiled for AVX-512, AVX2 and the x86-64 baseline and the best
 /// the CPU supports is chosen at load time (function multi-versioning). Every path performs the same
@@ -34,12 +34,13 @@ class GramPoints {
   Eigen::Index padded() const { return static_cast<Eigen::Index>(omega_.size()); }
   const double* omega() const { return omega_.data(); }
   const double* omega2() const { return omega2_.data(); }
+  const double* mask() const { return mask_.data(); }  ///< 1 for a point, 0 for padding
   const double* b_re() const { return b_re_.data(); }
   const double* b_im() const { return b_im_.data(); }
 
  private:
   Eigen::Index n_;
-  std::vector<double> omega_, omega2_, b_re_, b_im_;
+  std::vector<double> omega_, omega2_, mask_, b_re_, b_im_;
 };
 
 /// Work space of residue_gram for p residues (one per thread; the pass allocates nothing).

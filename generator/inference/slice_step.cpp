@@ -27,12 +27,12 @@ bool SliceStep::inside(const Eigen::VectorXd& u, double log_l_min, double& log_l
 long SliceStep::move(Eigen::VectorXd& u, Eigen::VectorXd& theta, double& log_l, double log_l_min, int slices,
                      Rng& rng) {
   constexpr int kMaxSteps = 1000;  // stepping-out cap per side; unit cube bounds it long before
-  ADMITGEN_ENSURE(axes_ != nullptr && axes_->rows() == dim_, "slice axes not set");
+  ADMITGEN_ENSURE(axes_ != nullptr && scale_ != nullptr && axes_->rows() == dim_, "slice axes not set");
   long calls = 0;
   long expansions = 0, contractions = 0;
   for (int k = 0; k < slices; ++k) {
     for (int i = 0; i < dim_; ++i) direction_[i] = rng.normal();
-    direction_ = scale_ * (*axes_ * direction_.normalized());
+    direction_ = *scale_ * (*axes_ * direction_.normalized());
     // Initial bracket of unit width (in units of the direction), randomly placed around 0.
     double left = -rng.uniform(), right = left + 1.0, trial_log_l = 0.0;
     for (int step = 0; step < kMaxSteps; ++step, --left, ++expansions) {
@@ -59,9 +59,8 @@ long SliceStep::move(Eigen::VectorXd& u, Eigen::VectorXd& theta, double& log_l, 
     }
   }
   // Adapt the width: more expansions than contractions means the bracket is too short.
-  const double ratio = 2.0 * static_cast<double>(std::max<long>(expansions, 1)) /
-                       static_cast<double>(std::max<long>(expansions, 1) + contractions);
-  scale_ *= std::clamp(ratio, 0.5, 2.0);
+  const double ratio = static_cast<double>(expansions + 1) / static_cast<double>(contractions + 1);
+  *scale_ *= std::clamp(ratio, 0.25, 8.0);
   return calls;
 }
 

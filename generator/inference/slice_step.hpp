@@ -5,7 +5,10 @@
 /// isotropically in the space whitened by the live points' covariance (PolyChord; dynesty "rslice").
 /// Each 1-D move leaves the uniform distribution on the constrained region invariant for any width,
 /// so the width only affects efficiency; it adapts between replacements so that stepping-out and
-/// shrinking happen about equally often (dynesty's rule).
+/// shrinking happen about equally often (dynesty's rule). The width belongs to the whitening it is used
+/// with (one per cluster of live points): a cluster whose covariance spans several narrow modes needs a
+/// width far below one that is a single mode, and a shared width would make the second step out by
+/// hundreds of calls per slice.
 #pragma once
 
 #include "core/rng.hpp"
@@ -19,13 +22,15 @@ class SliceStep {
  public:
   SliceStep(int dim, const PriorTransformFn& transform, const LogLikelihoodFn& log_likelihood);
 
-  /// Sets the whitening matrix (lower Cholesky factor of the live points' covariance in u).
-  void set_axes(const Eigen::MatrixXd& cholesky) { axes_ = &cholesky; }
+  /// Sets the whitening matrix (lower Cholesky factor of the live points' covariance in u) and the width
+  /// in its units, adapted in place by each move.
+  void set_axes(const Eigen::MatrixXd& cholesky, double& scale) {
+    axes_ = &cholesky;
+    scale_ = &scale;
+  }
 
   /// Moves (u, θ, ln L) by `slices` slice moves under ln L > log_l_min; returns calls made.
   long move(Eigen::VectorXd& u, Eigen::VectorXd& theta, double& log_l, double log_l_min, int slices, Rng& rng);
-
-  double scale() const { return scale_; }
 
  private:
   /// ln L at u if u is inside the unit cube and above the bound (θ written to theta_trial_).
@@ -35,7 +40,7 @@ class SliceStep {
   const PriorTransformFn& transform_;
   const LogLikelihoodFn& log_likelihood_;
   const Eigen::MatrixXd* axes_ = nullptr;
-  double scale_ = 1.0;
+  double* scale_ = nullptr;
   Eigen::VectorXd direction_, trial_, theta_trial_;
 };
 

@@ -7,19 +7,19 @@
  *
  * Continuous model (time dependence e^{+jwt}; G = rho c v_n / p normalised admittance, v_n into the wall):
  *   G(s) = G_inf + sum_q A_q/(lambda_q + s) + sum_s [(B_s + jC_s)/(alpha_s + j beta_s + s) + (B_s - jC_s)/(alpha_s - j beta_s + s)]
- *   G_inf = 0.7372843101391041
- *   B_1 = -90.11631704590312
- *   C_1 = -115.36406577416561
- *   alpha_1 = 574.3741887894225
- *   beta_1 = 3365.5426342647625
- *   B_2 = 1682.6850290911416
- *   C_2 = -9275.811541151745
- *   alpha_2 = 6833.241840008868
- *   beta_2 = 3636.069694743055
- *   B_3 = -813.0563874009912
- *   C_3 = 715.9894098296401
- *   alpha_3 = 2719.0412302965874
- *   beta_3 = 11298.984666881192
+ *   G_inf = 0.7350118615306978
+ *   B_1 = -91.69483830212613
+ *   C_1 = -113.77739046284887
+ *   alpha_1 = 573.6145624519456
+ *   beta_1 = 3358.5138357519136
+ *   B_2 = 1712.5847361124395
+ *   C_2 = -9358.462166398824
+ *   alpha_2 = 6841.037796012832
+ *   beta_2 = 3613.7956588487104
+ *   B_3 = -807.616911556983
+ *   C_3 = 699.0660215164911
+ *   alpha_3 = 2696.61584577057
+ *   beta_3 = 11305.978122068238
  *
  * Discretisation (method "matched exponential, refitted numerators", ADMITGEN_RT_METHOD_MATCHED_EXP):
  *   every pole keeps its exact image z = e^{-aT} (as PLRC; L-stable); residues, direct term and a short FIR
@@ -70,26 +70,26 @@
 #define WALL_48000_Q15_HAS_FS_48000 1
 
 /* ---- fs = 48000 Hz ------------------------------------------------------------------------------------
- * refit: max |H - G|/|G| at the data frequencies = 9.4e-06 (plain PLRC coefficients: 0.000858)
+ * refit: max |H - G|/|G| at the data frequencies = 9.87e-06 (plain PLRC coefficients: 0.000864)
  * passivity of H: Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive
  * terms: 2 FIR taps, 0 real poles, 3 pairs; folded into the FIR path: none
- * L1 norm of the emitted impulse response 1.81203; tail to -120 dB: 1157 samples
+ * L1 norm of the emitted impulse response 1.81137; tail to -120 dB: 1159 samples
  * output scaling: y_q15 = y * 2^-1; output table exponent y_exp = 3, acc_shift = 29
- * zero input after any excitation decays to exactly 0 within 1828 samples
+ * zero input after any excitation decays to exactly 0 within 1830 samples
  */
 static const int16_t wall_48000_q15_48000_fir[2] = {
-  2930, /* d_0 */
-  13, /* d_1 */
+  2917, /* d_0 */
+  14, /* d_1 */
 };
 static const int16_t wall_48000_q15_48000_real[1] = {
   0 /* padding: C has no empty arrays */
 };
 static const int16_t wall_48000_q15_48000_pair[18] = {
-  -3755, -18147, 3118, 3, -1293, 1655, /* alpha = 574.374, beta = 3365.54 1/s (535.643 Hz), alpha T = 0.01197 */
-  -8859, -4302, 8696, 1, 2163, 11930, /* alpha = 6833.24, beta = 3636.07 1/s (578.698 Hz), alpha T = 0.1424 */
-  -5317, -14443, 3609, 1, -2520, -2218, /* alpha = 2719.04, beta = 11299 1/s (1798.29 Hz), alpha T = 0.05665 */
+  -3748, -18109, 3114, 3, -1317, 1635, /* alpha = 573.615, beta = 3358.51 1/s (534.524 Hz), alpha T = 0.01195 */
+  -8866, -4275, 8705, 1, 2199, 12024, /* alpha = 6841.04, beta = 3613.8 1/s (575.153 Hz), alpha T = 0.1425 */
+  -5291, -14459, 3580, 1, -2523, -2184, /* alpha = 2696.62, beta = 11306 1/s (1799.4 Hz), alpha T = 0.05618 */
 };
-#define WALL_48000_Q15_48000_ZERO_DECAY_SAMPLES 1828
+#define WALL_48000_Q15_48000_ZERO_DECAY_SAMPLES 1830
 #define WALL_48000_Q15_48000_OUT_SHIFT 1
 static const admitgen_rt_model_q15 wall_48000_q15_48000 = {
   ADMITGEN_RT_FIELD(abi_version) 1u,
@@ -117,33 +117,33 @@ static inline const admitgen_rt_model_q15 *wall_48000_q15_model(int32_t fs_hz) {
 #define WALL_48000_Q15_Q 0
 #define WALL_48000_Q15_S 3
 static const double wall_48000_q15_theta[13] = {
-  0.7372843101391041, /* G_inf */
-  -90.11631704590312, /* B_1 */
-  -115.36406577416561, /* C_1 */
-  574.3741887894225, /* alpha_1 */
-  3365.5426342647625, /* beta_1 */
-  1682.6850290911416, /* B_2 */
-  -9275.811541151745, /* C_2 */
-  6833.241840008868, /* alpha_2 */
-  3636.069694743055, /* beta_2 */
-  -813.0563874009912, /* B_3 */
-  715.9894098296401, /* C_3 */
-  2719.0412302965874, /* alpha_3 */
-  11298.984666881192 /* beta_3 */
+  0.7350118615306978, /* G_inf */
+  -91.69483830212613, /* B_1 */
+  -113.77739046284887, /* C_1 */
+  573.6145624519456, /* alpha_1 */
+  3358.5138357519136, /* beta_1 */
+  1712.5847361124395, /* B_2 */
+  -9358.462166398824, /* C_2 */
+  6841.037796012832, /* alpha_2 */
+  3613.7956588487104, /* beta_2 */
+  -807.616911556983, /* B_3 */
+  699.0660215164911, /* C_3 */
+  2696.61584577057, /* alpha_3 */
+  11305.978122068238 /* beta_3 */
 };
 static const double wall_48000_q15_48000_ref_fir[2] = {
-  0.7154263938806875,
-  0.0032659074196584696,
+  0.7122775510166266,
+  0.0034101401244313275,
 };
 static const double wall_48000_q15_48000_ref_real[1] = {
   0.0
 };
 static const double wall_48000_q15_48000_ref_pair[15] = {
-  -0.014322675777672853, -0.06922470793807176, 0.011894819528205303, -0.31566317548094625, 0.4041136675106439,
-  -0.1351775856309759, -0.06563714981178904, 0.13269034144056527, 0.5281600169206514, 2.912710004728358,
-  -0.08113119672718633, -0.2203832667824219, 0.055072139311309706, -0.6151846602889514, -0.5416173036733289,
+  -0.014296950374738883, -0.06908146445419565, 0.011879182097818427, -0.3216150978244602, 0.399080457066605,
+  -0.1352876746306316, -0.06522523401230744, 0.1328311947506064, 0.5369673979378518, 2.9355433408818716,
+  -0.0807339389890102, -0.2206201895436761, 0.054630570115074856, -0.6160087200679272, -0.5330843872436499,
 };
-#define WALL_48000_Q15_48000_REF_H0 0.7478738350434835
+#define WALL_48000_Q15_48000_REF_H0 0.7461301401412028
 #endif
 
 /* Band absorption from the continuous model, for engines that take material absorption instead of a filter:
@@ -151,54 +151,54 @@ static const double wall_48000_q15_48000_ref_pair[15] = {
  * mean over the band (IEC 61260 base-10 bands). */
 #define WALL_48000_Q15_N_OCTAVE 10
 static const float wall_48000_q15_octave[10][3] = {
-  { 31.622776f, 0.032075513f, 0.05845501f }, /* 22-45 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.04716486f, 0.08067723f }, /* 45-89 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.1016437f, 0.15348972f }, /* 89-178 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.25246376f, 0.31692538f }, /* 178-355 Hz, outside the data: model extrapolation */
-  { 501.18723f, 0.5277126f, 0.5168906f }, /* 355-708 Hz */
-  { 1000.0f, 0.9380044f, 0.8437909f }, /* 708-1413 Hz */
-  { 1995.2623f, 0.985877f, 0.93297744f }, /* 1413-2818 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.9893137f, 0.93820477f }, /* 2818-5623 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.98212147f, 0.9440536f }, /* 5623-11220 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.97853386f, 0.94609565f }, /* 11220-22387 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.030375144f, 0.055431996f }, /* 22-45 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.045626137f, 0.07809173f }, /* 45-89 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.10064945f, 0.15196629f }, /* 89-178 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.25260988f, 0.31701913f }, /* 178-355 Hz, outside the data: model extrapolation */
+  { 501.18723f, 0.52760446f, 0.5168131f }, /* 355-708 Hz */
+  { 1000.0f, 0.9379936f, 0.84377384f }, /* 708-1413 Hz */
+  { 1995.2623f, 0.98600936f, 0.93292296f }, /* 1413-2818 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.98925865f, 0.93828064f }, /* 2818-5623 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.98178834f, 0.94420403f }, /* 5623-11220 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9781094f, 0.9462709f }, /* 11220-22387 Hz, outside the data: model extrapolation */
 };
 #define WALL_48000_Q15_N_THIRD_OCTAVE 30
 static const float wall_48000_q15_third_octave[30][3] = {
-  { 25.118864f, 0.029946346f, 0.05530276f }, /* 22-28 Hz, outside the data: model extrapolation */
-  { 31.622776f, 0.031732656f, 0.057933304f }, /* 28-35 Hz, outside the data: model extrapolation */
-  { 39.81072f, 0.034548596f, 0.062130556f }, /* 35-45 Hz, outside the data: model extrapolation */
-  { 50.118725f, 0.03897378f, 0.06873093f }, /* 45-56 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.045893658f, 0.07893278f }, /* 56-71 Hz, outside the data: model extrapolation */
-  { 79.43282f, 0.05663102f, 0.094373226f }, /* 71-89 Hz, outside the data: model extrapolation */
-  { 100.0f, 0.07309058f, 0.117134646f }, /* 89-112 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.09784784f, 0.14957045f }, /* 112-141 Hz, outside the data: model extrapolation */
-  { 158.48932f, 0.13400374f, 0.19377527f }, /* 141-178 Hz, outside the data: model extrapolation */
-  { 199.52623f, 0.18442978f, 0.250472f }, /* 178-224 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.24970861f, 0.3170037f }, /* 224-282 Hz, outside the data: model extrapolation */
-  { 316.22775f, 0.32325646f, 0.38329577f }, /* 282-355 Hz */
-  { 398.10718f, 0.37930682f, 0.41987994f }, /* 355-447 Hz */
-  { 501.18723f, 0.4527502f, 0.44559208f }, /* 447-562 Hz */
-  { 630.95734f, 0.7510961f, 0.68521637f }, /* 562-708 Hz */
-  { 794.32825f, 0.8821359f, 0.79822576f }, /* 708-891 Hz */
-  { 1000.0f, 0.9461532f, 0.8488489f }, /* 891-1122 Hz */
-  { 1258.9254f, 0.9856932f, 0.88427806f }, /* 1122-1413 Hz */
-  { 1584.8932f, 0.9965979f, 0.91859263f }, /* 1413-1778 Hz */
-  { 1995.2623f, 0.9760707f, 0.9446141f }, /* 1778-2239 Hz, outside the data: model extrapolation */
-  { 2511.8865f, 0.9849595f, 0.9357154f }, /* 2239-2818 Hz, outside the data: model extrapolation */
-  { 3162.2776f, 0.99098086f, 0.9354747f }, /* 2818-3548 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.9899337f, 0.9382726f }, /* 3548-4467 Hz, outside the data: model extrapolation */
-  { 5011.8726f, 0.98702407f, 0.9408675f }, /* 4467-5623 Hz, outside the data: model extrapolation */
-  { 6309.573f, 0.98416746f, 0.9428263f }, /* 5623-7079 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.9819097f, 0.9442022f }, /* 7079-8913 Hz, outside the data: model extrapolation */
-  { 10000.0f, 0.98028785f, 0.9451319f }, /* 8913-11220 Hz, outside the data: model extrapolation */
-  { 12589.254f, 0.97918123f, 0.945745f }, /* 11220-14125 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.9784485f, 0.946143f }, /* 14125-17783 Hz, outside the data: model extrapolation */
-  { 19952.623f, 0.97797215f, 0.94639874f }, /* 17783-22387 Hz, outside the data: model extrapolation */
+  { 25.118864f, 0.0282228f, 0.05220365f }, /* 22-28 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.030028587f, 0.054900397f }, /* 28-35 Hz, outside the data: model extrapolation */
+  { 39.81072f, 0.03287511f, 0.059193566f }, /* 35-45 Hz, outside the data: model extrapolation */
+  { 50.118725f, 0.037348066f, 0.06593063f }, /* 45-56 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.04434192f, 0.07632376f }, /* 56-71 Hz, outside the data: model extrapolation */
+  { 79.43282f, 0.055192333f, 0.0920261f }, /* 71-89 Hz, outside the data: model extrapolation */
+  { 100.0f, 0.071821034f, 0.11513576f }, /* 89-112 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.09682313f, 0.14801638f }, /* 112-141 Hz, outside the data: model extrapolation */
+  { 158.48932f, 0.13331537f, 0.192758f }, /* 141-178 Hz, outside the data: model extrapolation */
+  { 199.52623f, 0.18416578f, 0.250051f }, /* 178-224 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.2499031f, 0.31716084f }, /* 224-282 Hz, outside the data: model extrapolation */
+  { 316.22775f, 0.32376406f, 0.38384068f }, /* 282-355 Hz */
+  { 398.10718f, 0.37936014f, 0.42001998f }, /* 355-447 Hz */
+  { 501.18723f, 0.45233405f, 0.44511715f }, /* 447-562 Hz */
+  { 630.95734f, 0.7511348f, 0.6853189f }, /* 562-708 Hz */
+  { 794.32825f, 0.88205916f, 0.7981266f }, /* 708-891 Hz */
+  { 1000.0f, 0.9461871f, 0.8488705f }, /* 891-1122 Hz */
+  { 1258.9254f, 0.9857037f, 0.8843045f }, /* 1122-1413 Hz */
+  { 1584.8932f, 0.99659723f, 0.91857755f }, /* 1413-1778 Hz */
+  { 1995.2623f, 0.9761894f, 0.9445459f }, /* 1778-2239 Hz, outside the data: model extrapolation */
+  { 2511.8865f, 0.98523855f, 0.93563527f }, /* 2239-2818 Hz, outside the data: model extrapolation */
+  { 3162.2776f, 0.9910759f, 0.9355054f }, /* 2818-3548 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.98986435f, 0.9383554f }, /* 3548-4467 Hz, outside the data: model extrapolation */
+  { 5011.8726f, 0.98683316f, 0.94098157f }, /* 4467-5623 Hz, outside the data: model extrapolation */
+  { 6309.573f, 0.983889f, 0.9429624f }, /* 5623-7079 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.98157f, 0.94435424f }, /* 7079-8913 Hz, outside the data: model extrapolation */
+  { 10000.0f, 0.9799066f, 0.9452951f }, /* 8913-11220 Hz, outside the data: model extrapolation */
+  { 12589.254f, 0.9787725f, 0.9459158f }, /* 11220-14125 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9780219f, 0.94631886f }, /* 14125-17783 Hz, outside the data: model extrapolation */
+  { 19952.623f, 0.977534f, 0.94657785f }, /* 17783-22387 Hz, outside the data: model extrapolation */
 };
 
 /* Machine-readable description of exactly the coefficients above (schema admitgen.emit/1), read by
  * admitgen check:
-admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q15","format":"q15","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7372843101391041,-90.11631704590312,-115.36406577416561,574.3741887894225,3365.5426342647625,1682.6850290911416,-9275.811541151745,6833.241840008868,3636.069694743055,-813.0563874009912,715.9894098296401,2719.0412302965874,11298.984666881192]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":9.39692935092186e-06,"plrc_max_rel_error":0.0008576497678161865,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.7154263938806875,0.0032659074196584696],"real":[],"pair":[[-0.014322675777672853,-0.06922470793807176,0.011894819528205303,-0.31566317548094625,0.4041136675106439],[-0.1351775856309759,-0.06563714981178904,0.13269034144056527,0.5281600169206514,2.912710004728358],[-0.08113119672718633,-0.2203832667824219,0.055072139311309706,-0.6151846602889514,-0.5416173036733289]]},"q15":{"bits":15,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.8120345672344185,"zero_decay_bound":1828,"fir":[2930,13],"real":[],"pair":[[-3755,-18147,3118,3,-1293,1655],[-8859,-4302,8696,1,2163,11930],[-5317,-14443,3609,1,-2520,-2218]]}}]} admitgen:end
+admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q15","format":"q15","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7350118615306978,-91.69483830212613,-113.77739046284887,573.6145624519456,3358.5138357519136,1712.5847361124395,-9358.462166398824,6841.037796012832,3613.7956588487104,-807.616911556983,699.0660215164911,2696.61584577057,11305.978122068238]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":9.874795925256388e-06,"plrc_max_rel_error":0.0008641256409277281,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.7122775510166266,0.0034101401244313275],"real":[],"pair":[[-0.014296950374738883,-0.06908146445419565,0.011879182097818427,-0.3216150978244602,0.399080457066605],[-0.1352876746306316,-0.06522523401230744,0.1328311947506064,0.5369673979378518,2.9355433408818716],[-0.0807339389890102,-0.2206201895436761,0.054630570115074856,-0.6160087200679272,-0.5330843872436499]]},"q15":{"bits":15,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.8113713073224074,"zero_decay_bound":1830,"fir":[2917,14],"real":[],"pair":[[-3748,-18109,3114,3,-1317,1635],[-8866,-4275,8705,1,2199,12024],[-5291,-14459,3580,1,-2523,-2184]]}}]} admitgen:end
  */
 
 #endif /* WALL_48000_Q15_H */
