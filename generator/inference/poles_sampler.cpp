@@ -61,7 +61,11 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
   const Likelihood likelihood(data, order, count);
   const Eigen::ArrayXd weight = posterior_weights(poles);
   Rng rng(draw_seed);
-  double best = -std::numeric_limits<double>::infinity();
+  // The run's best fit: of every sampled ψ, the one whose least-squares residues leave the smallest residual
+  // S₀ (the highest ln L with residues free). The marginal's own peak is a different ψ wherever the prior
+  // shrinks residues, as it does for a spare pair that could fit noise with large ones; the best fit is
+  // what the missed-mode checks compare across orders (docs/method.md, "Model selection").
+  double best = std::numeric_limits<double>::infinity();
   std::vector<double> best_theta;
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const double* psi = dim == 0 ? nullptr : poles.point(i);
@@ -71,8 +75,8 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
       run.log_likelihood[i] = -std::numeric_limits<double>::infinity();
       continue;
     }
-    if (c.log_evidence > best) {
-      best = c.log_evidence;
+    if (c.s0 < best) {
+      best = c.s0;
       best_theta.assign(static_cast<std::size_t>(order.dim()), 0.0);
       assemble_theta(order, psi, least_squares_residues(c), best_theta.data());
     }

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <limits>
 #include <map>
@@ -78,7 +79,7 @@ ModelResult run_poles(const Measurement& data, const Order& order, const FitSett
                      run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
                                        sampler, derive_seed(sampler.seed, 0x7e51dULL), progress),
                      sampler.live, 0.0, {}};
-  result.sampler = "poles_analytic_residues";
+  result.sampler = kPoleSamplerName;
   return result;
 }
 
@@ -211,13 +212,60 @@ std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, dou
           (worst == models.size() || m.run.max_log_likelihood > models[worst].run.max_log_likelihood))
         worst = small;
     }
-    if (worst != models.size()) missed.push_back({big, worst, models[worst].run.max_log_likelihood, false});
+    if (worst != models.size())
+      missed.push_back({big, worst, models[worst].run.max_log_likelihood, false, b.run.max_log_likelihood, false});
   }
   return missed;
 }
 
+namespace {
+
+bool pole_sampled(const ModelResult& m) { return m.sampler == kPoleSamplerName; }
+
+/// Both checks on the pole sampler's marginal (selection/reduced_model.hpp; docs/method.md, "Model
+/// selection"), between every pair of orders one of which contains the other: the larger order's peak with
+/// its surplus poles dropped against the smaller's, and the smaller's peak completed by the larger's surplus
+/// poles against the larger's.
+std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const FitSettings& settings,
+                                              const std::vector<ModelResult>& models, double tolerance) {
+  std::vector<MarginalPeak> peak;
+  for (const ModelResult& m : models)
+    peak.push_back(marginal_peak(data, m.order, m.run, m.live, settings.priors, settings.data_count));
+  std::vector<std::optional<MissedMode>> worst(models.size());
+  const auto flag = [&](std::size_t order, std::size_t shown, double log_l, bool larger) {
+    if (log_l > peak[order].log_l + tolerance && (!worst[order] || log_l > worst[order]->reference_log_l))
+      worst[order] = MissedMode{order, shown, log_l, larger, peak[order].log_l, true};
+  };
+  for (std::size_t small = 0; small < models.size(); ++small)
+    for (std::size_t big = 0; big < models.size(); ++big) {
+      const Order &s = models[small].order, &b = models[big].order;
+      if (s == b || s.q() > b.q() || s.s() > b.s() || !std::isfinite(peak[small].log_l) ||
+          !std::isfinite(peak[big].log_l))
+        continue;
+      const double* theta_small = models[small].run.point(peak[small].row);
+      const double* theta_big = models[big].run.point(peak[big].row);
+      flag(small, big, reduced_log_marginal(data, s, b, theta_big, settings.priors, settings.data_count), true);
+      flag(big, small,
+           completed_log_marginal(data, s, theta_small, b, theta_big, settings.priors, settings.data_count), false);
+    }
+  std::vector<MissedMode> missed;
+  for (const auto& m : worst)
+    if (m) missed.push_back(*m);
+  return missed;
+}
+
+/// What a re-run must beat to replace a run: its marginal's peak for the pole sampler, else its best ln L.
+double best_of(const Measurement& data, const FitSettings& settings, const ModelResult& m) {
+  if (!pole_sampled(m)) return m.run.max_log_likelihood;
+  return marginal_peak(data, m.order, m.run, m.live, settings.priors, settings.data_count).log_l;
+}
+
+}  // namespace
+
 std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
                                      const std::vector<ModelResult>& models, double tolerance) {
+  if (!models.empty() && std::all_of(models.begin(), models.end(), pole_sampled))
+    return marginal_missed_modes(data, settings, models, tolerance);
   std::vector<MissedMode> missed = missed_modes(models, tolerance);
   if (settings.passive) return missed;
   for (std::size_t small = 0; small < models.size(); ++small) {
@@ -235,7 +283,7 @@ std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings&
       const double log_l = reduced_log_likelihood(data, m.order, b.order, b.run.point(max_likelihood_index(b.run)),
                                                   settings.priors, settings.data_count);
       if (log_l > own + tolerance && (!worst || log_l > worst->reference_log_l))
-        worst = MissedMode{small, big, log_l, true};
+        worst = MissedMode{small, big, log_l, true, m.run.max_log_likelihood, false};
     }
     if (worst) missed.push_back(*worst);
   }
@@ -248,12 +296,17 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
   std::vector<std::string> warnings;
   for (const MissedMode& m : missed) {
     const ModelResult &run = models[m.order], &shown = models[m.contained];
+    const std::string reached =
+        m.marginal ? (m.larger ? "reached by the peak of the larger order" : "reached by the peak of the nested order")
+                   : (m.larger ? "reached by the best model of the larger order" : "of the nested order");
+    const std::string how =
+        m.marginal ? (m.larger ? " with its surplus poles dropped" : " completed by the larger order's surplus poles")
+                   : (m.larger ? " with its surplus terms dropped" : "");
     warnings.push_back(fmt::format(
-        "{}: best ln L {:.1f} is below {:.1f} {} {}{}; the sampler missed a mode of {}, whose ln Z is "
+        "{}: {} {:.1f} is below {:.1f} {} {}{}; the sampler missed a mode of {}, whose ln Z is "
         "underestimated (rerun with more live points, {})",
-        run.order.name(), run.run.max_log_likelihood, m.reference_log_l,
-        m.larger ? "reached by the best model of the larger order" : "of the nested order", shown.order.name(),
-        m.larger ? " with its surplus terms dropped" : "", run.order.name(), setting("sampler.live")));
+        run.order.name(), m.marginal ? "the peak of ln L(poles) (residues and noise integrated out)" : "best ln L",
+        m.own_log_l, m.reference_log_l, reached, shown.order.name(), how, run.order.name(), setting("sampler.live")));
   }
   return warnings;
 }
@@ -314,7 +367,7 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
     // for a run that found the mode the first one missed).
     for (std::size_t i : which) {
       rounds[i] = round;
-      if (again[i].run.max_log_likelihood > results[i].run.max_log_likelihood) results[i] = std::move(again[i]);
+      if (best_of(data, settings, again[i]) > best_of(data, settings, results[i])) results[i] = std::move(again[i]);
     }
   }
 }

@@ -66,6 +66,9 @@ struct FitSettings {
   int grid_growth = 2;
 };
 
+/// fit.json's per-model "sampler" of runs by the pole sampler (inference/poles_sampler.hpp).
+inline constexpr const char* kPoleSamplerName = "poles_analytic_residues";
+
 struct ModelResult {
   Order order;
   NestedRun run;
@@ -117,6 +120,9 @@ struct MissedMode {
   std::size_t contained;  ///< index of the order that shows it (contained in it, or containing it if `larger`)
   double reference_log_l = 0.0;  ///< the ln L that order shows is reachable
   bool larger = false;
+  double own_log_l = 0.0;  ///< the missing run's best: its ln L, or its marginal's peak when `marginal`
+  /// Compared on the pole sampler's marginal L(ψ) (selection/reduced_model.hpp) rather than on ln L.
+  bool marginal = false;
 };
 /// Both checks; the second needs the data and the priors (skipped for `passive` fits, whose likelihood
 /// also needs the reduced model passive).

@@ -6,6 +6,7 @@
 #include "inference/pole_space.hpp"
 #include "inference/residue_evidence.hpp"
 
+#include <algorithm>
 #include <bitset>
 #include <cmath>
 #include <limits>
@@ -23,6 +24,30 @@ std::vector<unsigned> subsets(int n, int k) {
   return out;
 }
 
+/// Appends to `poles` the real poles, then the pairs, of θ (order `from`) selected by the bit masks.
+void gather_poles(const Order& from, const double* theta, unsigned real, unsigned pairs, std::vector<double>& poles) {
+  for (int q = 0; q < from.q(); ++q)
+    if (real & (1u << q)) poles.push_back(theta[Order::lambda(q)]);
+  for (int s = 0; s < from.s(); ++s)
+    if (pairs & (1u << s)) {
+      poles.push_back(theta[from.alpha(s)]);
+      poles.push_back(theta[from.beta(s)]);
+    }
+}
+
+/// ψ packed as inference/pole_space.hpp (every λ, then every (α, β)) from two gather_poles results, `first`
+/// with q_first real poles and `second` with q_second.
+std::vector<double> packed(const std::vector<double>& first, int q_first, const std::vector<double>& second,
+                           int q_second) {
+  std::vector<double> psi(first.begin(), first.begin() + q_first);
+  psi.insert(psi.end(), second.begin(), second.begin() + q_second);
+  psi.insert(psi.end(), first.begin() + q_first, first.end());
+  psi.insert(psi.end(), second.begin() + q_second, second.end());
+  return psi;
+}
+
+unsigned all_of(int n) { return n == 0 ? 0u : (1u << n) - 1u; }
+
 }  // namespace
 
 double reduced_log_likelihood(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
@@ -34,20 +59,14 @@ double reduced_log_likelihood(const Measurement& data, const Order& small, const
   const bool boxed = priors.residues == ResiduePrior::uniform;
   Eigen::VectorXd lo, hi;
   residue_box(small, priors, lo, hi);
-  std::vector<double> poles(static_cast<std::size_t>(pole_count(small)));
+  std::vector<double> poles;
   std::vector<double> theta(static_cast<std::size_t>(small.dim()));
   double best = -std::numeric_limits<double>::infinity();
   for (unsigned real : subsets(big.q(), small.q()))
     for (unsigned pairs : subsets(big.s(), small.s())) {
       // ψ of the smaller order (inference/pole_space.hpp packing): the kept λ, then the kept (α, β).
-      std::size_t k = 0;
-      for (int q = 0; q < big.q(); ++q)
-        if (real & (1u << q)) poles[k++] = theta_big[Order::lambda(q)];
-      for (int s = 0; s < big.s(); ++s)
-        if (pairs & (1u << s)) {
-          poles[k++] = theta_big[big.alpha(s)];
-          poles[k++] = theta_big[big.beta(s)];
-        }
+      poles.clear();
+      gather_poles(big, theta_big, real, pairs, poles);
       const ResiduePosterior& c = evidence.posterior(poles.data());
       if (!c.valid) continue;
       // The least-squares residues; under the uniform prior, min over its box of (r − r̂)ᵀM(r − r̂), solved in
@@ -63,6 +82,55 @@ double reduced_log_likelihood(const Measurement& data, const Order& small, const
       assemble_theta(small, poles.data(), r, theta.data());
       const double log_l = likelihood(theta.data());
       if (std::isfinite(log_l) && log_l > best) best = log_l;
+    }
+  return best;
+}
+
+MarginalPeak marginal_peak(const Measurement& data, const Order& order, const NestedRun& run, int live,
+                           const PriorRanges& priors, DataCount count) {
+  MarginalPeak peak;
+  if (run.size() == 0) return peak;
+  const ResidueEvidence evidence(data, order, count, priors.admittance_scale);
+  const std::size_t first = run.size() > static_cast<std::size_t>(live) + 1 ? run.size() - static_cast<std::size_t>(live) - 1 : 0;
+  std::vector<double> psi;
+  for (std::size_t i = first; i < run.size(); ++i) {
+    psi.clear();
+    gather_poles(order, run.point(i), all_of(order.q()), all_of(order.s()), psi);
+    const double log_l = evidence(psi.data());
+    if (log_l > peak.log_l) peak = {i, log_l};
+  }
+  return peak;
+}
+
+double reduced_log_marginal(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
+                            const PriorRanges& priors, DataCount count) {
+  ADMITGEN_ENSURE(small.q() <= big.q() && small.s() <= big.s(), "{} is not contained in {}", small.name(), big.name());
+  const ResidueEvidence evidence(data, small, count, priors.admittance_scale);
+  double best = -std::numeric_limits<double>::infinity();
+  std::vector<double> psi;
+  for (unsigned real : subsets(big.q(), small.q()))
+    for (unsigned pairs : subsets(big.s(), small.s())) {
+      psi.clear();
+      gather_poles(big, theta_big, real, pairs, psi);
+      best = std::max(best, evidence(psi.data()));
+    }
+  return best;
+}
+
+double completed_log_marginal(const Measurement& data, const Order& small, const double* theta_small, const Order& big,
+                              const double* theta_big, const PriorRanges& priors, DataCount count) {
+  ADMITGEN_ENSURE(small.q() <= big.q() && small.s() <= big.s(), "{} is not contained in {}", small.name(), big.name());
+  const ResidueEvidence evidence(data, big, count, priors.admittance_scale);
+  std::vector<double> kept;
+  gather_poles(small, theta_small, all_of(small.q()), all_of(small.s()), kept);
+  double best = -std::numeric_limits<double>::infinity();
+  std::vector<double> added;
+  for (unsigned real : subsets(big.q(), big.q() - small.q()))
+    for (unsigned pairs : subsets(big.s(), big.s() - small.s())) {
+      added.clear();
+      gather_poles(big, theta_big, real, pairs, added);
+      const std::vector<double> psi = packed(kept, small.q(), added, big.q() - small.q());
+      best = std::max(best, evidence(psi.data()));
     }
   return best;
 }

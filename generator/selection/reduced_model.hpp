@@ -10,8 +10,12 @@
 /// the mirror image of the check by contained orders (selection/fit.hpp missed_modes).
 #pragma once
 
+#include <cstddef>
+#include <limits>
+
 #include "data/measurement.hpp"
 #include "inference/likelihood.hpp"
+#include "inference/nested_sampler.hpp"
 #include "inference/priors.hpp"
 #include "model/order.hpp"
 
@@ -26,5 +30,28 @@ namespace admitgen {
 /// (numerically singular).
 double reduced_log_likelihood(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
                               const PriorRanges& priors, DataCount count);
+
+/// The same comparisons for runs of the pole sampler, made on the function it samples: the marginal
+/// likelihood L(ψ) of the poles, residues and noise integrated out under the Gaussian residue prior
+/// (inference/residue_evidence.hpp). The profile ln L of the functions above is no fair yardstick there:
+/// a spare pole can fit noise with large residues that the prior shrinks, so the marginal's peak, where the
+/// run ends, need not be the best fit, and the best fit among the samples is an extreme of a few lucky ones.
+/// Nested sampling ends at the peak of what it samples, so a point of higher marginal is a mode it missed.
+struct MarginalPeak {
+  std::size_t row = 0;  ///< the run's sample (θ packed as model/order.hpp) at the peak
+  double log_l = -std::numeric_limits<double>::infinity();  ///< ln L(ψ) there
+};
+/// The highest marginal over a run's final `live` points and anything after them (where nested sampling
+/// ends); log_l = −∞ for an empty run.
+MarginalPeak marginal_peak(const Measurement& data, const Order& order, const NestedRun& run, int live,
+                           const PriorRanges& priors, DataCount count);
+/// The highest marginal of `small` over every way of dropping surplus poles of θ' (order `big`).
+double reduced_log_marginal(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
+                            const PriorRanges& priors, DataCount count);
+/// The highest marginal of `big` over every way of completing the poles of θ (order `small`) with surplus
+/// poles of θ' (order `big`): where the larger run's own peak is below it, the larger run missed the mode
+/// that the smaller one found.
+double completed_log_marginal(const Measurement& data, const Order& small, const double* theta_small, const Order& big,
+                              const double* theta_big, const PriorRanges& priors, DataCount count);
 
 }  // namespace admitgen

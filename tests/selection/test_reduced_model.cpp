@@ -2,6 +2,7 @@
 // A larger order's best model read as a smaller one (selection/reduced_model.hpp) and the missed-mode check
 // it feeds (selection/fit.hpp missed_modes), against least squares solved here from the model's formula.
 #include "inference/likelihood.hpp"
+#include "inference/residue_evidence.hpp"
 #include "inference/synthetic_data.hpp"
 #include "selection/fit.hpp"
 #include "selection/reduced_model.hpp"
@@ -156,4 +157,67 @@ TEST_CASE("missed modes: a smaller order below what the larger order's best show
   // With the Q1S1 run at the truth's poles nothing is missed.
   const std::vector<ModelResult> fine{one_point_run(Order(1, 1), ls), models[1]};
   CHECK(missed_modes(data, settings, fine).empty());
+}
+
+TEST_CASE("missed modes of the pole sampler: compared on the marginal of the poles, both ways") {
+  // Runs of the pole sampler are compared on what it samples, the marginal L(ψ) (inference/residue_evidence.hpp,
+  // whose accuracy has its own tests): the logic under test is which poles are dropped or added, and which run
+  // is flagged. The reference values are that marginal at the poles the check should have built.
+  const Measurement data = test::synthetic(Order(1, 1), truth(), 150, 100.0, 4000.0, 0.01, 20261127);
+  FitSettings settings;
+  const ResidueEvidence q1s1(data, Order(1, 1), settings.data_count, settings.priors.admittance_scale);
+  const ResidueEvidence q2s1(data, Order(2, 1), settings.data_count, settings.priors.admittance_scale);
+  const auto one_point_run = [&](const Order& order, const Eigen::VectorXd& theta) {
+    ModelResult m{order, {}, 1, 0.0, {}, {}};
+    m.sampler = kPoleSamplerName;
+    m.run.dim = order.dim();
+    m.run.samples.assign(theta.data(), theta.data() + theta.size());
+    m.run.log_likelihood = {Likelihood(data, order, settings.data_count)(theta.data())};
+    m.run.log_weight = {0.0};
+    m.run.max_log_likelihood = m.run.log_likelihood[0];
+    return m;
+  };
+  Eigen::VectorXd poor = truth();
+  poor[2] = 2000.0;  // Q1S1 stuck with its real pole at 2000 s⁻¹
+  const std::vector<double> truth_poles{8000.0, 1500.0, 10000.0}, poor_poles{2000.0, 1500.0, 10000.0};
+  REQUIRE(q1s1(truth_poles.data()) > q1s1(poor_poles.data()) + 100.0);
+
+  SUBCASE("the smaller run is flagged by the larger run's poles with the spurious one dropped") {
+    const std::vector<ModelResult> models{one_point_run(Order(1, 1), poor), one_point_run(Order(2, 1), larger())};
+    const auto missed = missed_modes(data, settings, models);
+    REQUIRE(missed.size() == 1);
+    CHECK(missed[0].order == 0);
+    CHECK(missed[0].contained == 1);
+    CHECK(missed[0].larger);
+    CHECK(missed[0].marginal);
+    CHECK(missed[0].reference_log_l == doctest::Approx(q1s1(truth_poles.data())).epsilon(1e-12));
+    CHECK(missed[0].own_log_l == doctest::Approx(q1s1(poor_poles.data())).epsilon(1e-12));
+    const auto warnings = missed_mode_warnings(models, missed);
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].find("Q1S1: the peak of ln L(poles)") == 0);
+  }
+  SUBCASE("the larger run is flagged by the smaller run's poles completed with its surplus pole") {
+    Eigen::VectorXd big_poor = larger();
+    big_poor[4] = 2000.0;  // its second real pole, the one that should sit at 8000 s⁻¹
+    const std::vector<ModelResult> models{one_point_run(Order(1, 1), truth()), one_point_run(Order(2, 1), big_poor)};
+    const auto missed = missed_modes(data, settings, models);
+    REQUIRE(missed.size() == 1);
+    CHECK(missed[0].order == 1);
+    CHECK(missed[0].contained == 0);
+    CHECK_FALSE(missed[0].larger);
+    // The best completion: the truth's poles plus one of Q2S1's real poles (3000 or 2000 s⁻¹).
+    const std::vector<double> with_3000{8000.0, 3000.0, 1500.0, 10000.0}, with_2000{8000.0, 2000.0, 1500.0, 10000.0};
+    CHECK(missed[0].reference_log_l ==
+          doctest::Approx(std::max(q2s1(with_3000.data()), q2s1(with_2000.data()))).epsilon(1e-12));
+  }
+  SUBCASE("a larger run at the best completion of the smaller run's peak is not flagged, nor is the smaller") {
+    // Q2S1's candidates: Q1S1's poles plus one of larger()'s real poles (3000 or 8000 s⁻¹: a doubled pole
+    // doubles the prior variance of its residue, which can pay). The run sits at the better one.
+    const std::vector<double> with_3000{8000.0, 3000.0, 1500.0, 10000.0}, with_8000{8000.0, 8000.0, 1500.0, 10000.0};
+    Eigen::VectorXd big = larger();
+    big[4] = 8000.0;
+    big[2] = q2s1(with_3000.data()) > q2s1(with_8000.data()) ? 3000.0 : 8000.0;
+    const std::vector<ModelResult> models{one_point_run(Order(1, 1), truth()), one_point_run(Order(2, 1), big)};
+    CHECK(missed_modes(data, settings, models).empty());
+  }
 }
