@@ -91,7 +91,7 @@ Emission prepare_emission(const FitRecord& fit, const std::string& fit_path, con
 /// The header text from the template text (deterministic: no timestamp; byte-identical on re-run).
 std::string render_header(const Emission& emission, const std::string& template_text, const std::string& file_name);
 
-/// The header's model block (docs/formats.md, "Emitted header"): the machine-readable description of
+/// The header's model block (docs/formats.md, "The header's machine-readable block"): the machine-readable description of
 /// exactly what the header emits, schema "admitgen.emit/1", as one line of JSON; the header carries it
 /// between "admitgen:model" and "admitgen:end" markers. Its one writer; read_emitted_header is its one
 /// reader. (Both stay beside the header template: emit checks the header it renders before writing it,

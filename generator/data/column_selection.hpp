@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// Which columns of a table hold the frequency and the two parts of the complex value, which
-/// quantity that value is, and in which units (docs/reading-data.md, "Choosing columns"): from
+/// quantity that value is, and in which units (docs/reading-data.md, "Options" and "Column names"): from
 /// --columns by position or by header name, or from the header's names alone.
 #pragma once
 

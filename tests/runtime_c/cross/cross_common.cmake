@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # cross_common.cmake - building and running the C runtime on other architectures with Debian's cross
-# toolchains and QEMU (docs/runtime.md, "Cross-architecture proof"). Included by run_cross_test.cmake and
+# toolchains and QEMU (docs/runtime.md, "Embedded targets"). Included by run_cross_test.cmake and
 # cross_figures.cmake (cmake -P scripts). Targets:
 #   aarch64       aarch64-linux-gnu-gcc, static, qemu-aarch64 (user mode); NEON kernels
 #   armhf         arm-linux-gnueabihf-gcc (ARMv7-A Thumb-2, VFPv3-D16, no NEON), static, qemu-arm
