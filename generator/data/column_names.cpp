@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "data/column_names.hpp"
 
+#include "core/text.hpp"
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -18,11 +20,8 @@ std::string lower_ascii(std::string s) {
   return s;
 }
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\"'");
-  if (b == std::string::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t\"'") - b + 1);
-}
+/// Blanks, tabs and quotes off both ends (a header name may be quoted).
+std::string trim_name(const std::string& s) { return std::string(trim(s, " \t\"'")); }
 
 const std::map<std::string, UnitKind>& units() {
   static const std::map<std::string, UnitKind> table{
@@ -108,7 +107,7 @@ std::optional<std::pair<Quantity, Part>> part_and_symbol(const std::string& n) {
 }  // namespace
 
 std::string normalise_unit(const std::string& text, bool whole_field) {
-  std::string u = trim(text);
+  std::string u = trim_name(text);
   if (whole_field && u.size() >= 2 && ((u.front() == '[' && u.back() == ']') || (u.front() == '(' && u.back() == ')')))
     u = u.substr(1, u.size() - 2);
   replace_all(u, "\xC2\xB0", "deg");  // °
@@ -131,17 +130,17 @@ std::optional<UnitKind> unit_kind(const std::string& u) {
 }
 
 std::pair<std::string, std::string> split_name_unit(const std::string& field) {
-  const std::string f = trim(field);
+  const std::string f = trim_name(field);
   const auto open = f.rfind('[');
   if (open != std::string::npos && f.find(']', open) != std::string::npos) {
     const auto close = f.find(']', open);
-    return {trim(f.substr(0, open) + f.substr(close + 1)), f.substr(open + 1, close - open - 1)};
+    return {trim_name(f.substr(0, open) + f.substr(close + 1)), f.substr(open + 1, close - open - 1)};
   }
   const auto paren = f.rfind('(');
   if (!f.empty() && f.back() == ')' && paren != std::string::npos) {
     const std::string inside = f.substr(paren + 1, f.size() - paren - 2);
     if (!normalise_unit(inside, false).empty() && is_known_unit(normalise_unit(inside, false)))
-      return {trim(f.substr(0, paren)), inside};
+      return {trim_name(f.substr(0, paren)), inside};
   }
   const auto underscore = f.rfind('_');  // "f_Hz", "f_kHz"
   if (underscore != std::string::npos && underscore + 1 < f.size()) {
@@ -150,13 +149,13 @@ std::pair<std::string, std::string> split_name_unit(const std::string& field) {
   }
   const auto slash = f.rfind(" / ");
   if (slash != std::string::npos && is_known_unit(normalise_unit(f.substr(slash + 3), false)))
-    return {trim(f.substr(0, slash)), f.substr(slash + 3)};
+    return {trim_name(f.substr(0, slash)), f.substr(slash + 3)};
   // ISO 80000-1 "quantity/unit" without spaces ("f/kHz", "Z/Pa s/m"): the first slash after which the rest
   // is a unit (so a unit with its own slash stays whole); "Z/Z0" or "Re(Z/rho c)" have none.
   for (auto at = f.find('/'); at != std::string::npos && at > 0; at = f.find('/', at + 1)) {
-    const std::string unit = trim(f.substr(at + 1));
+    const std::string unit = trim_name(f.substr(at + 1));
     const std::string reduced = normalise_unit(unit, false);
-    if (!reduced.empty() && reduced != "1" && is_known_unit(reduced)) return {trim(f.substr(0, at)), unit};
+    if (!reduced.empty() && reduced != "1" && is_known_unit(reduced)) return {trim_name(f.substr(0, at)), unit};
   }
   return {f, {}};
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "data/text_table.hpp"
 
+#include "core/text.hpp"
+
 #include "core/errors.hpp"
 #include "data/column_names.hpp"
 #include "data/number_parsing.hpp"
@@ -35,12 +37,6 @@ std::vector<RawLine> content_lines(const std::string& text, int skip) {
   return out;
 }
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return {};
-  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
-}
-
 /// Fields of one line: split at `delimiter` outside double quotes (' ' = runs of blanks and tabs),
 /// each trimmed, enclosing quotes removed and "" inside quotes read as one quote (RFC 4180).
 std::vector<std::string> tokenize(const std::string& line, char delimiter) {
@@ -49,7 +45,7 @@ std::vector<std::string> tokenize(const std::string& line, char delimiter) {
   bool quoted = false, any = false;
   const bool blanks = delimiter == ' ';
   const auto flush = [&] {
-    if (!blanks || any) fields.push_back(blanks ? current : trim(current));
+    if (!blanks || any) fields.push_back(blanks ? current : std::string(trim(current)));
     current.clear();
     any = false;
   };

@@ -36,13 +36,6 @@ std::string_view suffixes_of(Dimension d) {
 
 }  // namespace
 
-std::string_view trim(std::string_view text) {
-  const auto b = text.find_first_not_of(" \t");
-  if (b == std::string_view::npos) return {};
-  const auto e = text.find_last_not_of(" \t");
-  return text.substr(b, e - b + 1);
-}
-
 ParameterList::ParameterList(std::string context, std::string_view text) : context_(std::move(context)) {
   if (trim(text).empty()) return;
   std::size_t start = 0;

@@ -6,6 +6,8 @@
 /// finite, lengths with an optional unit (m, cm, mm, um) and ratios with an optional '%'.
 #pragma once
 
+#include "core/text.hpp"  // trim, used with parameter lists
+
 #include <map>
 #include <optional>
 #include <string>
@@ -49,8 +51,5 @@ class ParameterList {
   std::vector<std::string> order_;
   mutable std::vector<std::string> asked_;
 };
-
-/// `text` without leading and trailing blanks.
-std::string_view trim(std::string_view text);
 
 }  // namespace admitgen
