@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Probe for tools/check-doc-sections: five citations resolve, two do not.
 // (docs/page.md, "Real section") and (docs/page.md "A bold title") and (docs/page.md, "first part")
 // (docs/page.md, "Real section (with a note)", and "No such
