@@ -19,4 +19,8 @@ std::size_t worker_count(int threads, std::size_t tasks);
 /// one of them). Every task runs even if another throws; the first exception (in time) is rethrown.
 void run_in_parallel(const std::vector<std::size_t>& queue, int threads, const std::function<void(std::size_t)>& task);
 
+/// CPU time of the calling thread in seconds (POSIX CLOCK_THREAD_CPUTIME_ID; 0 where unavailable): what a task
+/// on the pool cost, for benchmarks on a shared machine (never stored in an output).
+double thread_cpu_seconds();
+
 }  // namespace admitgen

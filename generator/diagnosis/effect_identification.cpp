@@ -9,8 +9,6 @@
 
 #include <fmt/format.h>
 
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -151,12 +149,6 @@ std::vector<std::size_t> schedule(const std::vector<EffectCandidate>& candidates
   queue.insert(queue.end(), cheap.begin(), cheap.end());
   queue.insert(queue.end(), sampled.begin() + static_cast<std::ptrdiff_t>(ahead), sampled.end());
   return queue;
-}
-
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 EffectResult start_result(const EffectCandidate& e) {

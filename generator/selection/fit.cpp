@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <limits>
 #include <map>
 #include <memory>
@@ -46,15 +45,6 @@ Model order_model(const Measurement& data, const Order& order, const FitSettings
 }
 
 namespace {
-
-/// CPU time of the calling thread (POSIX; 0 where unavailable).
-double thread_cpu_seconds() {
-#if defined(CLOCK_THREAD_CPUTIME_ID)
-  timespec t{};
-  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0) return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-#endif
-  return 0.0;
-}
 
 NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round) {
   NestedSettings sampler = settings.sampler;
