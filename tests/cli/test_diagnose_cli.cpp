@@ -45,7 +45,7 @@ TEST_CASE("diagnose CLI: finds a frame resonance, writes diagnosis.json, byte-id
   const std::string a = read_text(dir + "/a/diagnosis.json");
   CHECK(a == read_text(dir + "/b/diagnosis.json"));
   const auto j = nlohmann::json::parse(a);
-  CHECK(j["schema"] == "admitgen.diagnosis/2");
+  CHECK(j["schema"] == "admitgen.diagnosis/3");
   CHECK(j["verdict"]["effect"] == "frame_resonance");
   CHECK(j["effects"][0]["effect"] == "frame_resonance");
   CHECK(j["effects"][0]["parameters"]["f0_hz"].get<double>() == doctest::Approx(700.0).epsilon(0.02));
