@@ -138,25 +138,32 @@ struct Search {
 
 /// The swap step after an addition that leaves the residual structured: every earlier member in turn
 /// replaced by every candidate still offered (the others and their order kept, all refitted jointly);
-/// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands. `prefix`
-/// is the explanation without its last member, restated with the swap.
+/// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands. The last
+/// member is left out of the first pass (its alternatives, given the earlier members, were the addition
+/// round itself); once a swap is kept those earlier members have changed, so while the residual stays
+/// structured the step repeats over every member, the last included, at most kMaxExplanationEffects
+/// passes. `prefix` is the explanation without its last member, restated with each swap.
 void swap_round(Search& search, Explanation& out, EffectResult& prefix) {
   const std::size_t n = search.candidates.size();
-  const std::vector<std::size_t> members = member_indices(out.steps);
-  std::vector<std::vector<std::size_t>> swapped;
-  for (std::size_t j = 0; j + 1 < members.size(); ++j)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!search.offered(out.steps, i)) continue;
-      swapped.push_back(members);
-      swapped.back()[j] = i;
-    }
-  if (swapped.empty()) return;
-  std::vector<EffectResult> results = search.evaluate(swapped, out, out.joint.log_z);
-  out.rounds.push_back(results);
-  const std::size_t best = best_of(results);
-  if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
-  out.steps = search.restate(swapped[best], results[best], out, prefix);
-  out.joint = results[best];
+  for (std::size_t pass = 0; pass < kMaxExplanationEffects; ++pass) {
+    const std::vector<std::size_t> members = member_indices(out.steps);
+    const std::size_t swappable = pass == 0 ? members.size() - 1 : members.size();
+    std::vector<std::vector<std::size_t>> swapped;
+    for (std::size_t j = 0; j < swappable; ++j)
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!search.offered(out.steps, i)) continue;
+        swapped.push_back(members);
+        swapped.back()[j] = i;
+      }
+    if (swapped.empty()) return;
+    std::vector<EffectResult> results = search.evaluate(swapped, out, out.joint.log_z);
+    out.rounds.push_back(results);
+    const std::size_t best = best_of(results);
+    if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
+    out.steps = search.restate(swapped[best], results[best], out, prefix);
+    out.joint = results[best];
+    if (out.joint.gap_after.whiteness.white) return;
+  }
 }
 
 /// The backward step after round `round`: each member against the explanation without it (a single
