@@ -89,6 +89,18 @@ void print_rounds(const diagnosis::Diagnosis& d) {
   }
 }
 
+/// The members the backward step dropped, the main cause of an unexplained verdict, and with --rounds
+/// every joint run.
+void details(const diagnosis::Diagnosis& d, const Options& o) {
+  std::string dropped;
+  for (const auto& m : d.verdict.dropped)
+    dropped += fmt::format(" {}{} ({:.1f} dB)", m.effect, m.parameter.empty() ? "" : " " + m.parameter, m.bayes_factor_deciban);
+  if (!dropped.empty()) fmt::print("     dropped:{}\n", dropped);
+  const std::string main_cause = diagnosis::main_cause_text(d.verdict);
+  if (!main_cause.empty() && d.verdict.effect == "unexplained") fmt::print("     {}\n", main_cause);
+  if (o.rounds) print_rounds(d);
+}
+
 /// Wall time and the CPU time of all threads of the case (the wall time on an idle machine ≈ CPU / cores).
 struct Timing {
   double wall = 0.0, cpu = 0.0;
@@ -146,13 +158,8 @@ void named_sweep(const char* set, const std::vector<ValidationCase>& cases, cons
     cpu_max = std::max(cpu_max, t.cpu);
     for (const auto& e : case_truths(c)) ++appearances[e];
     line(c, d, ok ? "ok" : (all_named(d.verdict, c) ? "MISS+" : "MISS"), t, o);
-    std::string extra;
-    for (const auto& m : d.verdict.dropped) extra += fmt::format(" {}{} ({:.1f} dB)", m.effect, m.parameter.empty() ? "" : " " + m.parameter, m.bayes_factor_deciban);
-    if (!extra.empty()) fmt::print("     dropped:{}\n", extra);
-    const std::string main_cause = diagnosis::main_cause_text(d.verdict);
-    if (!main_cause.empty() && d.verdict.effect == "unexplained") fmt::print("     {}\n", main_cause);
+    details(d, o);
     if (!ok) leading_singles(d);
-    if (o.rounds) print_rounds(d);
   }
   std::string counts;
   for (const auto& [e, k] : appearances) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", e, k);
@@ -175,6 +182,7 @@ void two_effects(const Options& o) {
     line(c, d, named ? (half ? "ok" : "ok~") : "MISS", s, o);
     exactly += named_exactly(d.verdict, c);
     fmt::print("     exact model shrink {:.2f}; named exactly: {}\n", exact, named_exactly(d.verdict, c) ? "yes" : "no");
+    details(d, o);
     if (!named) leading_singles(d);
   }
   fmt::print("two effects: both named {}/{} = {:.0f} %; both named with shrink >= half the exact model's {}/{} = {:.0f} %; "
@@ -219,6 +227,7 @@ void out_of_vocabulary(const Options& o) {
       }
     }
     line(c, d, counted ? (ok ? "ok" : "MISS") : (ok ? "(ok)" : "(-)"), s, o);
+    details(d, o);
     fmt::print("     exact model shrink {:.2f}\n", exact);
   }
   fmt::print("out of vocabulary, no single effect halves the gap: unexplained {}/{} = {:.0f} %; of those with a real gap "

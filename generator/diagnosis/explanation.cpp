@@ -5,6 +5,7 @@
 #include "inference/evidence.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace admitgen::diagnosis {
@@ -105,13 +106,37 @@ struct Search {
                                      double log_z_floor) {
     if (models.empty()) return {};
     const std::vector<EffectCandidate> tried = combined(models, now);
-    std::vector<EffectResult> out =
-        evaluate_candidates(tried, likelihood, settings, log_z_floor, take_streams(models.size()), progress);
-    for (std::size_t k = 0; k < out.size(); ++k) {
-      fill_gap(out[k], tried[k], f_hz, y_real, gap_before);
-      out[k].candidate = models[k].back();
+    return with_gaps(models, tried,
+                     evaluate_candidates(tried, likelihood, settings, log_z_floor, take_streams(models.size()), progress));
+  }
+
+  /// The explanations without one member each (a backward step) against the whole one, ln Z = log_z_whole.
+  /// Only one question matters: does any of them come within the decision margin, ln Z ≥ log_z_whole −
+  /// 20 dB? So they are screened like an addition round (evaluate_contenders with the reference 40 dB
+  /// below the whole explanation: the margin lies 20 dB above it), and run in full only when their
+  /// screened evidence lies within kScreenDeciban of the margin or of the best of them; one far below keeps
+  /// its screened estimate, which decides the member decisive all the same.
+  std::vector<EffectResult> evaluate_reduced(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
+                                             double log_z_whole) {
+    if (models.empty()) return {};
+    const std::vector<EffectCandidate> tried = combined(models, now);
+    const double reference = log_z_whole - 2.0 * kDecisiveDeciban * std::log(10.0) / 10.0;
+    // No early stop: held to a leader this close, a screening run of 25 live points can stop before it
+    // has found a peak that lies far from where the whole explanation put the remaining members.
+    IdentificationSettings screened = settings;
+    screened.early_stop_deciban = 0.0;
+    return with_gaps(models, tried,
+                     evaluate_contenders(tried, likelihood, screened, reference, take_streams(models.size()), progress));
+  }
+
+  /// `results` of the models with their gap fields filled and the last member as their candidate.
+  std::vector<EffectResult> with_gaps(const std::vector<std::vector<std::size_t>>& models,
+                                      const std::vector<EffectCandidate>& tried, std::vector<EffectResult> results) const {
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      fill_gap(results[k], tried[k], f_hz, y_real, gap_before);
+      results[k].candidate = models[k].back();
     }
-    return out;
+    return results;
   }
 
   /// The steps of the explanation `members` (in that order, fitted jointly as `joint`) restated: member
@@ -141,11 +166,11 @@ struct Search {
 /// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands. The last
 /// member is left out of the first pass (its alternatives, given the earlier members, were the addition
 /// round itself); once a swap is kept those earlier members have changed, so while the residual stays
-/// structured the step repeats over every member, the last included, at most kMaxExplanationEffects
+/// structured the step repeats over every member, the last included, at most settings.swap_passes
 /// passes. `prefix` is the explanation without its last member, restated with each swap.
 void swap_round(Search& search, Explanation& out, EffectResult& prefix) {
   const std::size_t n = search.candidates.size();
-  for (std::size_t pass = 0; pass < kMaxExplanationEffects; ++pass) {
+  for (int pass = 0; pass < search.settings.swap_passes; ++pass) {
     const std::vector<std::size_t> members = member_indices(out.steps);
     const std::size_t swappable = pass == 0 ? members.size() - 1 : members.size();
     std::vector<std::vector<std::size_t>> swapped;
@@ -188,7 +213,7 @@ void backward_step(Search& search, std::size_t round, EffectResult prefix, Expla
         evaluated_at.push_back(j);
       }
     }
-    const std::vector<EffectResult> evaluated = search.evaluate(to_evaluate, out, search.log_z_none);
+    const std::vector<EffectResult> evaluated = search.evaluate_reduced(to_evaluate, out, out.joint.log_z);
     if (!evaluated.empty()) out.rounds.push_back(evaluated);
     for (std::size_t k = 0; k < evaluated.size(); ++k) reduced[evaluated_at[k]] = evaluated[k];
     const std::size_t weakest = best_of(reduced);  // the member whose removal costs least evidence

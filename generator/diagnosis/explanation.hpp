@@ -15,7 +15,7 @@
 ///   it is decisive (≥ 20 dB) against the explanation as it stands. It undoes a first member that
 ///   mimics two true ones, which pure addition cannot. Once a swap is kept and the residual is still
 ///   structured, the step repeats over every member, the last added included (it was chosen given
-///   earlier members that have changed since), at most kMaxExplanationEffects passes.
+///   earlier members that have changed since), at most IdentificationSettings::swap_passes (3) passes.
 ///   backward step: after every addition (and its swap), each member is tested against the explanation
 ///   without it by the rule of an addition, BF(E : E − m) ≥ 20 dB. The weakest member that is not
 ///   decisive is dropped (the two explanations are within the decision margin: the one with fewer
