@@ -129,6 +129,14 @@ struct Search {
                      evaluate_contenders(tried, likelihood, screened, reference, take_streams(models.size()), progress));
   }
 
+  /// The swaps of a swap pass against the explanation `now`: the question of an addition round (which is
+  /// best, and is it decisive against now), so screened like one (evaluate_contenders).
+  std::vector<EffectResult> evaluate_swaps(const std::vector<std::vector<std::size_t>>& models, const Explanation& now) {
+    const std::vector<EffectCandidate> tried = combined(models, now);
+    return with_gaps(models, tried,
+                     evaluate_contenders(tried, likelihood, settings, now.joint.log_z, take_streams(models.size()), progress));
+  }
+
   /// `results` of the models with their gap fields filled and the last member as their candidate.
   std::vector<EffectResult> with_gaps(const std::vector<std::vector<std::size_t>>& models,
                                       const std::vector<EffectCandidate>& tried, std::vector<EffectResult> results) const {
@@ -163,7 +171,8 @@ struct Search {
 
 /// The swap step after an addition that leaves the residual structured: every earlier member in turn
 /// replaced by every candidate still offered (the others and their order kept, all refitted jointly);
-/// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands. The last
+/// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands; the swaps
+/// are screened like an addition round (evaluate_contenders), only contenders run in full. The last
 /// member is left out of the first pass (its alternatives, given the earlier members, were the addition
 /// round itself); once a swap is kept those earlier members have changed, so while the residual stays
 /// structured the step repeats over every member, the last included, at most settings.swap_passes
@@ -181,7 +190,7 @@ void swap_round(Search& search, Explanation& out, EffectResult& prefix) {
         swapped.back()[j] = i;
       }
     if (swapped.empty()) return;
-    std::vector<EffectResult> results = search.evaluate(swapped, out, out.joint.log_z);
+    std::vector<EffectResult> results = search.evaluate_swaps(swapped, out);
     out.rounds.push_back(results);
     const std::size_t best = best_of(results);
     if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
