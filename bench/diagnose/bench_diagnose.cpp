@@ -7,14 +7,19 @@
 ///   single    a frame resonance (f0 800 Hz, q 8, y_peak 0.1): one effect, whose residual is white, then
 ///             the one round that tries the noise shape;
 ///   combined  a microphone spacing error (1 mm) and an edge gap (0.5 mm wide, 30 mm deep): the combined
-///             search runs a round of every remaining effect jointly with the first.
+///             search runs a round of every remaining effect jointly with the first (the two-effect case);
+///   triple    the same two and a frame resonance (f0 800 Hz, q 8, y_peak 0.1): three members, with the
+///             swap and backward steps of the combined search (the three-effect case).
+/// Targets (docs/diagnosis.md, "Speed"): single ≤ 3 s, two effects ≤ 10 s, three ≤ 20 s of wall time on 2
+/// cores; printed, not asserted (a shared machine's wall time is no test).
 /// Prints per-candidate method, likelihood calls, seconds and Bayes factor, the joint candidates of each
 /// round of the combined search, and the wall time of each configuration:
 ///   baseline   every candidate with parameters sampled, 1 thread, no early stop (the former method;
 ///              single case only, skipped with --no-baseline);
 ///   1 thread   quadrature for 0-1 parameters, early stop;
 ///   N threads  the same on 2 threads and on N (results identical; checked here).
-/// Usage: bench_diagnose [--points N] [--threads N] [--case single|combined|both] [--no-baseline] [--once]
+/// Usage: bench_diagnose [--points N] [--threads N] [--case single|combined|triple|both|all] [--no-baseline] [--once]
+///   (both: single and combined, the default; all: the three cases)
 ///   (--once: only the run on --threads threads, with its per-candidate table: CPU figures on a busy machine)
 #include "diagnosis/diagnosis.hpp"
 #include "diagnosis/diagnosis_record.hpp"
@@ -150,7 +155,7 @@ int main(int argc, char** argv) {
   fmt::print("# diagnose: {} points 50-4000 Hz, layered absorber against its SPEC, {} cores\n", points,
              std::thread::hardware_concurrency());
   bool identical = true;
-  if (which != "combined") {
+  if (which == "single" || which == "both" || which == "all") {
     fmt::print("\n# single: a frame resonance\n");
     const auto request = bench_case(points, {"frame_resonance:f0_hz=800,q=8,y_peak=0.1"});
     std::optional<Timed> former;
@@ -161,9 +166,15 @@ int main(int argc, char** argv) {
     }
     identical = bench_new(request, threads, former ? &*former : nullptr, once) && identical;
   }
-  if (which != "single") {
+  if (which == "combined" || which == "both" || which == "all") {
     fmt::print("\n# combined: a microphone spacing error and an edge gap\n");
     const auto request = bench_case(points, {"mic_spacing:delta_m=1mm", "edge_gap:width_m=0.5mm,depth_m=30mm"});
+    identical = bench_new(request, threads, nullptr, once) && identical;
+  }
+  if (which == "triple" || which == "all") {
+    fmt::print("\n# triple: a microphone spacing error, an edge gap and a frame resonance\n");
+    const auto request = bench_case(points, {"mic_spacing:delta_m=1mm", "edge_gap:width_m=0.5mm,depth_m=30mm",
+                                             "frame_resonance:f0_hz=800,q=8,y_peak=0.1"});
     identical = bench_new(request, threads, nullptr, once) && identical;
   }
   return identical ? 0 : 1;

@@ -9,18 +9,23 @@
 ///   out of vocabulary, among the cases no single effect halves (best single shrink < 2): unexplained
 ///   (also among those the exact model halves, i.e. whose gap is more than noise; oov-gaps prints the
 ///   exact model's shrink of each case without diagnosing).
-/// Usage: bench_validation [two|material|oov|oov-gaps|all] [--live N] [--threads N] [--stride K]
-///   [--from I] [--only TEXT] [--parameters]
+///   three effects, catalogue parameter + effect, single effects with a mimic: named exactly (the
+///   explanation is the case's effects and nothing else, residual white; explanation_cases.hpp).
+/// Usage: bench_validation [two|material|oov|oov-gaps|three|catalogue-effect|mimic|all] [--live N] [--threads N] [--stride K]
+///   [--from I] [--only TEXT] [--parameters] [--rounds]
 ///   (default all, 60 live points, all cores, every case; --stride K runs every K-th case of each set,
 ///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT,
-///   --parameters prints every member's parameters).
+///   --parameters prints every member's parameters, --rounds every joint run of the combined search).
 /// A case costs 0.1-62 s of CPU (docs/diagnosis.md: most of it in cases that run every round, out of
 /// vocabulary), the 85 cases together well under an hour of CPU; the compact CTest runs a fixed-seed subset.
 #include "explanation_cases.hpp"
+#include "inference/evidence.hpp"
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
+#include <map>
 #include <ctime>
 #include <cstring>
 #include <string>
@@ -38,6 +43,7 @@ struct Options {
   std::size_t from = 0;    ///< of those, start at this one
   std::string only;        ///< run only the cases whose label contains this text
   bool parameters = false;  ///< print every member's parameters (posterior means), not only material's
+  bool rounds = false;      ///< print every joint run of the combined search (why a case went the way it did)
 };
 
 template <class Cases>
@@ -66,6 +72,33 @@ diagnosis::Diagnosis run(const ValidationCase& c, const Options& o) {
   auto request = case_request(c, o.live);
   request.settings.threads = o.threads;
   return diagnosis::run_diagnosis(request);
+}
+
+/// Every joint run of the combined search, batch by batch (additions, swaps, restated steps, the models
+/// of a backward step), with its Bayes factor against no effect.
+void print_rounds(const diagnosis::Diagnosis& d) {
+  for (std::size_t r = 0; r < d.explanation.rounds.size(); ++r) {
+    std::vector<const diagnosis::EffectResult*> sorted;
+    for (const auto& e : d.explanation.rounds[r]) sorted.push_back(&e);
+    std::sort(sorted.begin(), sorted.end(), [](const auto* a, const auto* b) { return a->log_z > b->log_z; });
+    std::string out;
+    for (std::size_t k = 0; k < std::min<std::size_t>(6, sorted.size()); ++k)
+      out += fmt::format("{}{} {:.0f} dB ({})", k ? ", " : "", sorted[k]->name,
+                         deciban(sorted[k]->log_z, d.identification.log_z_none), sorted[k]->method);
+    fmt::print("     batch {}: {}\n", r + 1, out);
+  }
+}
+
+/// The members the backward step dropped, the main cause of an unexplained verdict, and with --rounds
+/// every joint run.
+void details(const diagnosis::Diagnosis& d, const Options& o) {
+  std::string dropped;
+  for (const auto& m : d.verdict.dropped)
+    dropped += fmt::format(" {}{} ({:.1f} dB)", m.effect, m.parameter.empty() ? "" : " " + m.parameter, m.bayes_factor_deciban);
+  if (!dropped.empty()) fmt::print("     dropped:{}\n", dropped);
+  const std::string main_cause = diagnosis::main_cause_text(d.verdict);
+  if (!main_cause.empty() && d.verdict.effect == "unexplained") fmt::print("     {}\n", main_cause);
+  if (o.rounds) print_rounds(d);
 }
 
 /// Wall time and the CPU time of all threads of the case (the wall time on an idle machine ≈ CPU / cores).
@@ -99,8 +132,44 @@ Timing timed(const ValidationCase& c, const Options& o, diagnosis::Diagnosis& d)
           static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC};
 }
 
+/// Whether every effect of the case is in the explanation (extra members allowed).
+bool all_named(const diagnosis::Verdict& v, const ValidationCase& c) {
+  for (const auto& t : case_truths(c))
+    if (!explains(v, t, t == "material" ? c.parameter : "")) return false;
+  return true;
+}
+
+/// A sweep scored by named_exactly (explanation_cases.hpp): one line per case, then the rate named
+/// exactly, the rate with every effect named (extra members allowed), the members dropped by the
+/// backward step, and the largest wall and CPU time of a case.
+void named_sweep(const char* set, const std::vector<ValidationCase>& cases, const Options& o) {
+  int exact = 0, all = 0, n = 0, dropped = 0;
+  double wall_max = 0.0, cpu_max = 0.0;
+  std::map<std::string, int> appearances;
+  for (const auto& c : cases) {
+    diagnosis::Diagnosis d;
+    const Timing t = timed(c, o, d);
+    const bool ok = named_exactly(d.verdict, c);
+    ++n;
+    exact += ok;
+    all += all_named(d.verdict, c);
+    dropped += !d.verdict.dropped.empty();
+    wall_max = std::max(wall_max, t.wall);
+    cpu_max = std::max(cpu_max, t.cpu);
+    for (const auto& e : case_truths(c)) ++appearances[e];
+    line(c, d, ok ? "ok" : (all_named(d.verdict, c) ? "MISS+" : "MISS"), t, o);
+    details(d, o);
+    if (!ok) leading_singles(d);
+  }
+  std::string counts;
+  for (const auto& [e, k] : appearances) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", e, k);
+  fmt::print("{}: named exactly {}/{} = {:.0f} %; every effect named (extras allowed) {}/{}; cases with a dropped member {}; "
+             "slowest case {:.1f} s wall, {:.1f} s CPU\n  effects appearing: {}\n",
+             set, exact, n, n ? 100.0 * exact / n : 0.0, all, n, dropped, wall_max, cpu_max, counts);
+}
+
 void two_effects(const Options& o) {
-  int both = 0, shrink_ok = 0, n = 0;
+  int both = 0, shrink_ok = 0, exactly = 0, n = 0;
   for (const auto& c : every(two_effect_cases(), o)) {
     diagnosis::Diagnosis d;
     const Timing s = timed(c, o, d);
@@ -111,11 +180,15 @@ void two_effects(const Options& o) {
     both += named;
     shrink_ok += named && half;
     line(c, d, named ? (half ? "ok" : "ok~") : "MISS", s, o);
-    fmt::print("     exact model shrink {:.2f}\n", exact);
+    exactly += named_exactly(d.verdict, c);
+    fmt::print("     exact model shrink {:.2f}; named exactly: {}\n", exact, named_exactly(d.verdict, c) ? "yes" : "no");
+    details(d, o);
     if (!named) leading_singles(d);
   }
-  fmt::print("two effects: both named {}/{} = {:.0f} %; both named with shrink >= half the exact model's {}/{} = {:.0f} %\n",
-             both, n, n ? 100.0 * both / n : 0.0, shrink_ok, n, n ? 100.0 * shrink_ok / n : 0.0);
+  fmt::print("two effects: both named {}/{} = {:.0f} %; both named with shrink >= half the exact model's {}/{} = {:.0f} %; "
+             "named exactly {}/{} = {:.0f} %\n",
+             both, n, n ? 100.0 * both / n : 0.0, shrink_ok, n, n ? 100.0 * shrink_ok / n : 0.0, exactly, n,
+             n ? 100.0 * exactly / n : 0.0);
 }
 
 void material(const Options& o) {
@@ -154,6 +227,7 @@ void out_of_vocabulary(const Options& o) {
       }
     }
     line(c, d, counted ? (ok ? "ok" : "MISS") : (ok ? "(ok)" : "(-)"), s, o);
+    details(d, o);
     fmt::print("     exact model shrink {:.2f}\n", exact);
   }
   fmt::print("out of vocabulary, no single effect halves the gap: unexplained {}/{} = {:.0f} %; of those with a real gap "
@@ -179,11 +253,16 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--stride") && i + 1 < argc) o.stride = static_cast<std::size_t>(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) o.only = argv[++i];
     else if (!std::strcmp(argv[i], "--parameters")) o.parameters = true;
+    else if (!std::strcmp(argv[i], "--rounds")) o.rounds = true;
     else o.set = argv[i];
   }
   if (o.set == "two" || o.set == "all") two_effects(o);
   if (o.set == "material" || o.set == "all") material(o);
   if (o.set == "oov" || o.set == "all") out_of_vocabulary(o);
   if (o.set == "oov-gaps") out_of_vocabulary_gaps(o);
+  if (o.set == "three" || o.set == "all") named_sweep("three effects", every(three_effect_cases(), o), o);
+  if (o.set == "catalogue-effect" || o.set == "all")
+    named_sweep("catalogue parameter + effect", every(catalogue_effect_cases(), o), o);
+  if (o.set == "mimic" || o.set == "all") named_sweep("single effects with a mimic", every(mimic_cases(), o), o);
   return 0;
 }

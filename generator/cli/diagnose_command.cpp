@@ -86,11 +86,20 @@ void print_summary(const Diagnosis& d, const std::string& path) {
     explanation += fmt::format("\n  {} {} ({}BF {:.1f} dB, shrink x{:.2f})", explanation.empty() ? "" : "+", m.effect,
                                params.empty() ? "" : params + "; ", m.bayes_factor_deciban, m.shrink_added);
   }
-  fmt::print("verdict: {} (shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}{}\nwrote {}\n", v.effect,
-             v.shrink, 100.0 * v.explained, v.band.f_center,
-             v.effect == "none" ? "" : (v.white_after ? ", residual white after" : ", structure left"),
+  std::string shares;
+  for (const auto& s : v.shares)
+    shares += fmt::format("{}{} {:.2f}", shares.empty() ? "" : ", ", v.explanation[s.member].effect, s.share);
+  std::string dropped;
+  for (const auto& m : v.dropped)
+    dropped += fmt::format("{}{}{} ({:.1f} dB)", dropped.empty() ? "" : ", ", m.effect,
+                           m.parameter.empty() ? "" : " " + m.parameter, m.bayes_factor_deciban);
+  const std::string main_cause = main_cause_text(v);
+  fmt::print("verdict: {}{} (shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}{}{}{}\nwrote {}\n", v.effect,
+             main_cause.empty() ? "" : " - " + main_cause, v.shrink, 100.0 * v.explained, v.band.f_center,
+             v.effect == "none" || !main_cause.empty() ? "" : (v.white_after ? ", residual white after" : ", structure left"),
              explanation.empty() ? "" : (v.effect == "unexplained" ? "; best attempt:" : "; explanation:") + explanation,
-             path);
+             shares.empty() ? "" : "\n  shares of the squared gap: " + shares,
+             dropped.empty() ? "" : "\n  dropped (within the decision margin, fewer parameters kept): " + dropped, path);
 }
 
 }  // namespace
@@ -105,7 +114,9 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
       "Decision: none unless an effect reaches 20 dB against no effect (unexplained if the gap is structured);\n"
       "then effects are added while each gains 20 dB (fitted jointly), an earlier one swapped for another when\n"
-      "that gains 20 dB; unexplained if the residual of that explanation is still structured.");
+      "that gains 20 dB, a member dropped when the explanation without it is within 20 dB; unexplained if the\n"
+      "residual of that explanation is still structured (with the main cause named when its share of the\n"
+      "squared gap is at least one half).");
   sub->add_option("--real,-r", cmd->real, "Measured admittance (CSV, read with the data options)")->required();
   auto* sim = sub->add_option("--sim,-s", cmd->sim,
                               "Simulated admittance: a CSV (read with the data options, each overridden by its "

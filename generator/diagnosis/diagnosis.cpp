@@ -56,7 +56,7 @@ Diagnosis run_diagnosis(const DiagnosisRequest& request, Progress& progress) {
   if (request.stages) d.stages = attribute_stages(real.f_hz, real.y, *request.stages);
   d.candidates = effect_candidates(real.f_hz, y_sim, request.sim, request.tube);
   d.identification = identify_effects(real.f_hz, real.y, y_sim, d.gap, d.candidates, request.settings, progress);
-  d.explanation = explain(real.f_hz, real.y, d.gap, d.candidates, d.identification, request.settings, progress);
+  d.explanation = explain(real.f_hz, real.y, y_sim, d.gap, d.candidates, d.identification, request.settings, progress);
   d.verdict = decide(d.gap, d.identification, d.explanation, d.candidates);
   return d;
 }

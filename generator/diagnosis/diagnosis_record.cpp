@@ -4,6 +4,8 @@
 #include "core/version.hpp"
 #include "diagnosis/diagnosis.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace admitgen::diagnosis {
@@ -79,6 +81,17 @@ VerdictRecord verdict_record(const Verdict& v) {
   VerdictRecord r;
   r.effect = v.effect;
   for (const auto& m : v.explanation) r.explanation.push_back({m.effect, m.parameters, m.bayes_factor_deciban, m.shrink_added});
+  const auto share = [&v](const VerdictShare& s) {
+    return ShareRecord{v.explanation[s.member].effect, static_cast<std::int64_t>(s.member), s.share};
+  };
+  for (const auto& s : v.shares) r.shares.push_back(share(s));
+  if (v.main_cause) r.main_cause = share(*v.main_cause);
+  for (const auto& d : v.dropped)
+    r.dropped.push_back({d.effect, d.parameter.empty() ? std::nullopt : std::optional<std::string>(d.parameter),
+                         d.bayes_factor_deciban,
+                         fmt::format("the explanation with it is less than {:g} deciban better than the one without it: "
+                                     "within the decision margin, the one with fewer parameters is kept",
+                                     kDecisiveDeciban)});
   r.shrink = v.shrink;
   r.explained_fraction = v.explained;
   r.band = edges(v.band);

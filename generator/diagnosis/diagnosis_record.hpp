@@ -17,7 +17,9 @@ namespace admitgen::diagnosis {
 struct Diagnosis;
 
 /// Schema identifier of the diagnosis file.
-inline constexpr const char* kDiagnosisSchema = "admitgen.diagnosis/2";
+inline constexpr const char* kDiagnosisSchema = "admitgen.diagnosis/3";
+/// The schema before shares, main cause and dropped members; still read (io/diagnosis_file.hpp).
+inline constexpr const char* kDiagnosisSchemaV2 = "admitgen.diagnosis/2";
 /// The schema before combined explanations; still read (io/diagnosis_file.hpp).
 inline constexpr const char* kDiagnosisSchemaV1 = "admitgen.diagnosis/1";
 
@@ -87,9 +89,27 @@ struct ExplanationMemberRecord {
   double shrink_added = 1.0;
 };
 
+/// A member's share of the squared gap (docs/diagnosis.md, "Main cause").
+struct ShareRecord {
+  std::string effect;
+  std::int64_t member = 0;  ///< index into the explanation
+  double share = 0.0;
+};
+
+/// A member the backward step dropped: within the decision margin, the explanation with fewer parameters.
+struct DroppedMemberRecord {
+  std::string effect;
+  std::optional<std::string> parameter;  ///< material only: the catalogue parameter
+  double log_bayes_factor_deciban = 0.0;  ///< the explanation with it against the one without it
+  std::string reason;
+};
+
 struct VerdictRecord {
   std::string effect = "none";  ///< the primary effect, none or unexplained
   std::vector<ExplanationMemberRecord> explanation;
+  std::vector<ShareRecord> shares;        ///< largest first; empty in /1 and /2 files
+  std::optional<ShareRecord> main_cause;  ///< the largest share when it is at least one half
+  std::vector<DroppedMemberRecord> dropped;
   double shrink = 1.0, explained_fraction = 0.0;  ///< of the whole explanation
   BandEdges band;
   double log_bayes_factor_deciban = 0.0;

@@ -75,6 +75,10 @@ struct IdentificationSettings {
   /// Live points of the screening runs of the combined search (evaluate_contenders); ≥ sampler.live:
   /// no screening. A quarter of the default.
   int screen_live = 25;
+  /// Passes of the swap step of the combined search (explanation.hpp): after a kept swap it repeats over
+  /// every member, at most this many passes in all. 1: the first pass only (earlier members only), the
+  /// search before repeated swaps (a test uses it to reach the backward step on a known path).
+  int swap_passes = 3;
 
   static NestedSettings effect_sampler() {
     NestedSettings s;

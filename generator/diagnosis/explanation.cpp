@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "diagnosis/explanation.hpp"
 
+#include "core/errors.hpp"
 #include "inference/evidence.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace admitgen::diagnosis {
@@ -30,6 +32,12 @@ std::vector<std::size_t> member_indices(const std::vector<ExplanationStep>& step
   return out;
 }
 
+/// `members` without its element at `j`.
+std::vector<std::size_t> without(std::vector<std::size_t> members, std::size_t j) {
+  members.erase(members.begin() + static_cast<std::ptrdiff_t>(j));
+  return members;
+}
+
 /// The search's state and the inputs every round shares.
 struct Search {
   const Eigen::ArrayXd& f_hz;
@@ -41,6 +49,20 @@ struct Search {
   Progress& progress;
   const EffectLikelihood likelihood;
   double log_z_none = 0.0;
+  std::uint64_t next_stream = 0;  ///< the first seed stream no run has used yet
+  std::vector<std::size_t> dropped;  ///< candidates the backward step took out (not offered again)
+
+  /// `count` fresh seed streams, the first returned: every batch takes the next block.
+  std::uint64_t take_streams(std::size_t count) {
+    const std::uint64_t first = next_stream;
+    next_stream += count;
+    return first;
+  }
+
+  /// Whether candidate i may join the explanation `steps` (not in it, not dropped before).
+  bool offered(const std::vector<ExplanationStep>& steps, std::size_t i) const {
+    return !holds(steps, i) && std::find(dropped.begin(), dropped.end(), i) == dropped.end();
+  }
 
   /// The joint candidate of each list of candidate indices (combine_effects, members in list order),
   /// sampled from the reference densities of what `now` and the single effects know (reference()).
@@ -79,61 +101,139 @@ struct Search {
     return out;
   }
 
-  /// Jointly fitted models of candidate lists, on the seed streams from first_stream on.
+  /// Jointly fitted models of candidate lists, on the next free seed streams.
   std::vector<EffectResult> evaluate(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
-                                     double log_z_floor, std::uint64_t first_stream) const {
+                                     double log_z_floor) {
     if (models.empty()) return {};
     const std::vector<EffectCandidate> tried = combined(models, now);
-    std::vector<EffectResult> out =
-        evaluate_candidates(tried, likelihood, settings, log_z_floor, first_stream, progress);
-    for (std::size_t k = 0; k < out.size(); ++k) fill_gap(out[k], tried[k], f_hz, y_real, gap_before);
-    return out;
+    return with_gaps(models, tried,
+                     evaluate_candidates(tried, likelihood, settings, log_z_floor, take_streams(models.size()), progress));
   }
 
-  /// The steps of the explanation `members` (in that order) restated after a swap: member k carries the
-  /// Bayes factor and the shrink of the first k + 1 members against the first k. Prefixes of one member
-  /// are the single effects; longer proper prefixes are evaluated on the streams from first_stream on.
+  /// The explanations without one member each (a backward step) against the whole one, ln Z = log_z_whole.
+  /// Only one question matters: does any of them come within the decision margin, ln Z ≥ log_z_whole −
+  /// 20 dB? So they are screened like an addition round (evaluate_contenders with the reference 40 dB
+  /// below the whole explanation: the margin lies 20 dB above it), and run in full only when their
+  /// screened evidence lies within kScreenDeciban of the margin or of the best of them; one far below keeps
+  /// its screened estimate, which decides the member decisive all the same.
+  std::vector<EffectResult> evaluate_reduced(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
+                                             double log_z_whole) {
+    if (models.empty()) return {};
+    const std::vector<EffectCandidate> tried = combined(models, now);
+    const double reference = log_z_whole - 2.0 * kDecisiveDeciban * std::log(10.0) / 10.0;
+    // No early stop: held to a leader this close, a screening run of 25 live points can stop before it
+    // has found a peak that lies far from where the whole explanation put the remaining members.
+    IdentificationSettings screened = settings;
+    screened.early_stop_deciban = 0.0;
+    return with_gaps(models, tried,
+                     evaluate_contenders(tried, likelihood, screened, reference, take_streams(models.size()), progress));
+  }
+
+  /// The swaps of a swap pass against the explanation `now`: the question of an addition round (which is
+  /// best, and is it decisive against now), so screened like one (evaluate_contenders).
+  std::vector<EffectResult> evaluate_swaps(const std::vector<std::vector<std::size_t>>& models, const Explanation& now) {
+    const std::vector<EffectCandidate> tried = combined(models, now);
+    return with_gaps(models, tried,
+                     evaluate_contenders(tried, likelihood, settings, now.joint.log_z, take_streams(models.size()), progress));
+  }
+
+  /// `results` of the models with their gap fields filled and the last member as their candidate.
+  std::vector<EffectResult> with_gaps(const std::vector<std::vector<std::size_t>>& models,
+                                      const std::vector<EffectCandidate>& tried, std::vector<EffectResult> results) const {
+    for (std::size_t k = 0; k < results.size(); ++k) {
+      fill_gap(results[k], tried[k], f_hz, y_real, gap_before);
+      results[k].candidate = models[k].back();
+    }
+    return results;
+  }
+
+  /// The steps of the explanation `members` (in that order, fitted jointly as `joint`) restated: member
+  /// k carries the Bayes factor and the shrink of the first k + 1 members against the first k. Prefixes
+  /// of one member are the single effects; longer proper prefixes are evaluated. `prefix` receives the
+  /// explanation without the last member.
   std::vector<ExplanationStep> restate(const std::vector<std::size_t>& members, const EffectResult& joint,
-                                       const Explanation& now, std::uint64_t first_stream) const {
+                                       const Explanation& now, EffectResult& prefix) {
     std::vector<std::vector<std::size_t>> longer;
     for (std::size_t k = 2; k < members.size(); ++k)
       longer.emplace_back(members.begin(), members.begin() + static_cast<std::ptrdiff_t>(k));
-    const std::vector<EffectResult> evaluated = evaluate(longer, now, log_z_none, first_stream);
-    std::vector<const EffectResult*> prefix{&singles[members.front()]};
-    for (const auto& r : evaluated) prefix.push_back(&r);
-    prefix.push_back(&joint);
-    std::vector<ExplanationStep> out{{members.front(), deciban(prefix[0]->log_z, log_z_none), prefix[0]->shrink}};
+    const std::vector<EffectResult> evaluated = evaluate(longer, now, log_z_none);
+    std::vector<const EffectResult*> prefixes{&singles[members.front()]};
+    for (const auto& r : evaluated) prefixes.push_back(&r);
+    prefixes.push_back(&joint);
+    std::vector<ExplanationStep> out{{members.front(), deciban(prefixes[0]->log_z, log_z_none), prefixes[0]->shrink}};
     for (std::size_t k = 1; k < members.size(); ++k)
-      out.push_back({members[k], deciban(prefix[k]->log_z, prefix[k - 1]->log_z),
-                     prefix[k - 1]->gap_after.total / prefix[k]->gap_after.total});
+      out.push_back({members[k], deciban(prefixes[k]->log_z, prefixes[k - 1]->log_z),
+                     prefixes[k - 1]->gap_after.total / prefixes[k]->gap_after.total});
+    if (members.size() >= 2) prefix = *prefixes[members.size() - 2];
     return out;
   }
 };
 
-/// The swap step after round `round` accepted a member and the residual is still structured: every
-/// earlier member in turn replaced by every candidate not in the explanation (the others and their
-/// order kept, all refitted jointly); the best swap is kept when it is decisive (≥ 20 dB) against the
-/// explanation as it stands. Swaps sample on the streams kMax·n·round …; the restated steps on the
-/// (kMax − 1)·n streams after those, so the search stays independent of the thread count.
-void swap_round(const Search& search, std::uint64_t round, Explanation& out) {
+/// The swap step after an addition that leaves the residual structured: every earlier member in turn
+/// replaced by every candidate still offered (the others and their order kept, all refitted jointly);
+/// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands; the swaps
+/// are screened like an addition round (evaluate_contenders), only contenders run in full. The last
+/// member is left out of the first pass (its alternatives, given the earlier members, were the addition
+/// round itself); once a swap is kept those earlier members have changed, so while the residual stays
+/// structured the step repeats over every member, the last included, at most settings.swap_passes
+/// passes. `prefix` is the explanation without its last member, restated with each swap.
+void swap_round(Search& search, Explanation& out, EffectResult& prefix) {
   const std::size_t n = search.candidates.size();
-  const std::vector<std::size_t> members = member_indices(out.steps);
-  std::vector<std::vector<std::size_t>> swapped;
-  for (std::size_t j = 0; j + 1 < members.size(); ++j)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (holds(out.steps, i)) continue;
-      swapped.push_back(members);
-      swapped.back()[j] = i;
+  for (int pass = 0; pass < search.settings.swap_passes; ++pass) {
+    const std::vector<std::size_t> members = member_indices(out.steps);
+    const std::size_t swappable = pass == 0 ? members.size() - 1 : members.size();
+    std::vector<std::vector<std::size_t>> swapped;
+    for (std::size_t j = 0; j < swappable; ++j)
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!search.offered(out.steps, i)) continue;
+        swapped.push_back(members);
+        swapped.back()[j] = i;
+      }
+    if (swapped.empty()) return;
+    std::vector<EffectResult> results = search.evaluate_swaps(swapped, out);
+    out.rounds.push_back(results);
+    const std::size_t best = best_of(results);
+    if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
+    out.steps = search.restate(swapped[best], results[best], out, prefix);
+    out.joint = results[best];
+    if (out.joint.gap_after.whiteness.white) return;
+  }
+}
+
+/// The backward step after round `round`: each member against the explanation without it (a single
+/// effect from the single effects, the one without the last member from `prefix`, the others
+/// evaluated); the weakest is dropped when the explanation with it is not decisively (≥ 20 dB) better,
+/// and the step repeats on what is left.
+void backward_step(Search& search, std::size_t round, EffectResult prefix, Explanation& out) {
+  while (out.steps.size() >= 2) {
+    const std::vector<std::size_t> members = member_indices(out.steps);
+    const std::size_t last = members.size() - 1;
+    std::vector<EffectResult> reduced(members.size());
+    std::vector<std::vector<std::size_t>> to_evaluate;
+    std::vector<std::size_t> evaluated_at;
+    for (std::size_t j = 0; j < members.size(); ++j) {
+      const std::vector<std::size_t> rest = without(members, j);
+      if (rest.size() == 1) {
+        reduced[j] = search.singles[rest.front()];
+      } else if (j == last) {
+        reduced[j] = prefix;
+      } else {
+        to_evaluate.push_back(rest);
+        evaluated_at.push_back(j);
+      }
     }
-  if (swapped.empty()) return;
-  const std::uint64_t first_stream = round * kMaxExplanationEffects * n;
-  std::vector<EffectResult> results = search.evaluate(swapped, out, out.joint.log_z, first_stream);
-  out.rounds.push_back(results);
-  const std::size_t best = best_of(results);
-  if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
-  results[best].candidate = swapped[best].back();
-  out.steps = search.restate(swapped[best], results[best], out, first_stream + (kMaxExplanationEffects - 1) * n);
-  out.joint = results[best];
+    const std::vector<EffectResult> evaluated = search.evaluate_reduced(to_evaluate, out, out.joint.log_z);
+    if (!evaluated.empty()) out.rounds.push_back(evaluated);
+    for (std::size_t k = 0; k < evaluated.size(); ++k) reduced[evaluated_at[k]] = evaluated[k];
+    const std::size_t weakest = best_of(reduced);  // the member whose removal costs least evidence
+    const double bf = deciban(out.joint.log_z, reduced[weakest].log_z);
+    if (bf >= kDecisiveDeciban) return;
+    out.dropped.push_back({members[weakest], bf, round});
+    search.dropped.push_back(members[weakest]);
+    const std::vector<std::size_t> rest = without(members, weakest);
+    out.steps = search.restate(rest, reduced[weakest], out, prefix);
+    out.joint = reduced[weakest];
+  }
 }
 
 }  // namespace
@@ -147,29 +247,70 @@ std::vector<ParameterSummary> Explanation::member_parameters(std::size_t k,
           joint.parameters.begin() + static_cast<std::ptrdiff_t>(offset + n)};
 }
 
-Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, const Gap& gap_before,
-                    const std::vector<EffectCandidate>& candidates, const Identification& identification,
-                    const IdentificationSettings& settings, Progress& progress) {
+std::vector<double> member_shares(const std::vector<EffectCandidate>& candidates, const std::vector<std::size_t>& members,
+                                  const std::vector<double>& theta, const Eigen::ArrayXcd& y_real,
+                                  const Eigen::ArrayXcd& y_sim) {
+  const std::size_t m = members.size();
+  ADMITGEN_ENSURE(m <= 16, "{} members are too many to share the gap among", m);
+  std::vector<std::size_t> start(m + 1, 0);
+  for (std::size_t k = 0; k < m; ++k) start[k + 1] = start[k] + candidates[members[k]].priors.size();
+  ADMITGEN_ENSURE(theta.size() == start[m], "{} parameters for members with {}", theta.size(), start[m]);
+  const double g0 = (y_real - y_sim).abs2().sum();
+  ADMITGEN_ENSURE(g0 > 0.0, "no gap to share");
+  // v(S) = G(∅) − G(S) for every subset S (bit k: member k acts), the members at their values in theta.
+  std::vector<double> v(std::size_t{1} << m, 0.0);
+  for (std::size_t mask = 1; mask < v.size(); ++mask) {
+    std::vector<const EffectCandidate*> with;
+    std::vector<double> t;
+    for (std::size_t k = 0; k < m; ++k) {
+      if (!(mask >> k & 1u)) continue;
+      with.push_back(&candidates[members[k]]);
+      t.insert(t.end(), theta.begin() + static_cast<std::ptrdiff_t>(start[k]),
+               theta.begin() + static_cast<std::ptrdiff_t>(start[k + 1]));
+    }
+    v[mask] = g0 - (y_real - combine_effects(with).predict(t.data()).y).abs2().sum();
+  }
+  // Shapley weights |S|! (m − |S| − 1)! / m!.
+  std::vector<double> weight(m, 1.0);
+  for (std::size_t s = 0; s < m; ++s) {
+    for (std::size_t i = 1; i <= s; ++i) weight[s] *= static_cast<double>(i);
+    for (std::size_t i = 1; i <= m - s - 1; ++i) weight[s] *= static_cast<double>(i);
+    for (std::size_t i = 1; i <= m; ++i) weight[s] /= static_cast<double>(i);
+  }
+  std::vector<double> out(m, 0.0);
+  for (std::size_t k = 0; k < m; ++k)
+    for (std::size_t mask = 0; mask < v.size(); ++mask) {
+      if (mask >> k & 1u) continue;
+      std::size_t size = 0;
+      for (std::size_t b = mask; b; b >>= 1) size += b & 1u;
+      out[k] += weight[size] * (v[mask | std::size_t{1} << k] - v[mask]) / g0;
+    }
+  return out;
+}
+
+Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, const Eigen::ArrayXcd& y_sim,
+                    const Gap& gap_before, const std::vector<EffectCandidate>& candidates,
+                    const Identification& identification, const IdentificationSettings& settings, Progress& progress) {
   Explanation out;
   std::vector<EffectResult> singles(candidates.size());
   for (const auto& r : identification.effects) singles[r.candidate] = r;
-  const Search search{f_hz, y_real, gap_before, candidates, singles, settings, progress,
-                      EffectLikelihood(y_real), identification.log_z_none};
-  const double log_z_none = search.log_z_none;
-  if (singles.empty()) return out;
   const std::size_t n = candidates.size();
+  Search search{f_hz, y_real, gap_before, candidates, singles, settings, progress,
+                EffectLikelihood(y_real), identification.log_z_none, n, {}};
+  const double log_z_none = search.log_z_none;
+  if (identification.effects.empty()) return out;
   const std::size_t first = best_of(singles);
   if (deciban(singles[first].log_z, log_z_none) < kDecisiveDeciban) return out;
   out.steps.push_back({first, deciban(singles[first].log_z, log_z_none), singles[first].shrink});
   out.joint = singles[first];
-  for (std::uint64_t round = 1; out.steps.size() < kMaxExplanationEffects; ++round) {
+  for (std::size_t round = 1; round <= kMaxExplanationRounds && out.steps.size() < kMaxExplanationEffects; ++round) {
     // A white residual leaves no structure in the mean; only the noise shape, which the lag-1 test
     // cannot see, may still be missing.
     const bool white = out.joint.gap_after.whiteness.white;
     std::vector<std::size_t> added;
     std::vector<std::vector<std::size_t>> models;
     for (std::size_t i = 0; i < n; ++i) {
-      if (holds(out.steps, i)) continue;
+      if (!search.offered(out.steps, i)) continue;
       if (white && candidates[i].stage != EffectStage::noise) continue;
       models.push_back(member_indices(out.steps));
       models.back().push_back(i);
@@ -177,19 +318,22 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     }
     if (models.empty()) break;
     const std::vector<EffectCandidate> tried = search.combined(models, out);
-    std::vector<EffectResult> results =
-        evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z, round * n, progress);
+    std::vector<EffectResult> results = evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z,
+                                                            search.take_streams(models.size()), progress);
     out.rounds.push_back(results);
     const std::size_t best = best_of(results);
     const double bf = deciban(results[best].log_z, out.joint.log_z);
     if (bf < kDecisiveDeciban) break;
     results[best].candidate = added[best];
     fill_gap(results[best], tried[best], f_hz, y_real, gap_before);
+    EffectResult prefix = out.joint;
     out.steps.push_back({added[best], bf, out.joint.gap_after.total / results[best].gap_after.total});
     out.joint = results[best];
-    if (!out.joint.gap_after.whiteness.white) swap_round(search, round, out);
+    if (!out.joint.gap_after.whiteness.white) swap_round(search, out, prefix);
+    backward_step(search, round, prefix, out);
   }
   out.joint.bayes_factor_deciban = deciban(out.joint.log_z, log_z_none);
+  if (!out.steps.empty()) out.shares = member_shares(candidates, member_indices(out.steps), out.joint.best, y_real, y_sim);
   return out;
 }
 

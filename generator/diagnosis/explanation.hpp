@@ -12,17 +12,31 @@
 ///   still tries the noise-stage effects, and only them.
 ///   swap step: after an addition that leaves the residual structured, every earlier member in turn is
 ///   replaced by every candidate not in the explanation (all refitted jointly); the best swap is kept if
-///   it is decisive (≥ 20 dB) against the explanation as it stands, at most one per round. It undoes a
-///   first member that mimics two true ones, which pure addition cannot.
+///   it is decisive (≥ 20 dB) against the explanation as it stands. It undoes a first member that
+///   mimics two true ones, which pure addition cannot. Once a swap is kept and the residual is still
+///   structured, the step repeats over every member, the last added included (it was chosen given
+///   earlier members that have changed since), at most IdentificationSettings::swap_passes (3) passes.
+///   backward step: after every addition (and its swap), each member is tested against the explanation
+///   without it by the rule of an addition, BF(E : E − m) ≥ 20 dB. The weakest member that is not
+///   decisive is dropped (the two explanations are within the decision margin: the one with fewer
+///   parameters is kept), and the step repeats. A dropped member is not offered again, so the search
+///   cannot cycle; it ends at the latest after kMaxExplanationRounds rounds.
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
 /// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
 /// only fits noise is not decisive. Every joint candidate samples from reference densities on its prior
 /// built on earlier posteriors (its members' in the explanation, the added member's single-effect one),
 /// the likelihood divided by them: the same evidence in fewer calls (docs/method.md, "Reference priors in
-/// the combined search"). Round r samples on the seed streams r·n + i (n candidates), after
-/// the single effects' 0 … n − 1, the swaps after round r on kMax·n·r + i and the steps restated after a
-/// swap on kMax·n·r + (kMax − 1)·n + i, so the search is deterministic whatever the thread count.
+/// the combined search"). Seed streams: the single effects sample on 0 … n − 1 (n candidates); every
+/// later batch of joint candidates (an addition round, its swaps, restated steps, the models of a
+/// backward step) takes the next block of streams, one per model, in the order the search runs them, so
+/// the search is deterministic whatever the thread count.
+///
+/// Shares (docs/diagnosis.md, "Main cause"): the part of the squared gap each member explains, at the
+/// joint max-likelihood parameters. With G(S) = Σ|y_real − ŷ_S|² for the members S acting alone
+/// (composed as combine_effects composes them) and v(S) = G(∅) − G(S), member k's share is its Shapley
+/// value  φ_k = Σ_{S ⊆ M∖k} |S|! (m − |S| − 1)! / m! · (v(S ∪ k) − v(S)),  divided by G(∅): the shares
+/// add up to the explained fraction of the whole explanation and do not depend on the members' order.
 #pragma once
 
 #include "diagnosis/effect_identification.hpp"
@@ -34,6 +48,10 @@ namespace admitgen::diagnosis {
 
 /// Members at most (bounds the search's cost; a gap that needs more is reported as it stands).
 inline constexpr std::size_t kMaxExplanationEffects = 3;
+/// Addition rounds at most: each round adds one member, the backward step may take members out again.
+inline constexpr std::size_t kMaxExplanationRounds = 2 * kMaxExplanationEffects;
+/// A member whose share of the squared gap is at least this is the main cause (verdict.hpp).
+inline constexpr double kMainCauseShare = 0.5;
 
 struct ExplanationStep {
   std::size_t candidate = 0;          ///< index into the candidates
@@ -42,8 +60,19 @@ struct ExplanationStep {
   double shrink_added = 1.0;  ///< gap of the first k members / gap of the first k + 1
 };
 
+/// A member the backward step took out: the explanation with it was not decisively better than the one
+/// without it, so the one with fewer parameters was kept.
+struct DroppedMember {
+  std::size_t candidate = 0;          ///< index into the candidates
+  double bayes_factor_deciban = 0.0;  ///< the explanation with it against the one without it (< kDecisiveDeciban)
+  std::size_t round = 0;              ///< the addition round after which it was dropped (1 …)
+};
+
 struct Explanation {
   std::vector<ExplanationStep> steps;  ///< in the order accepted; empty when no single effect is decisive
+  /// Each step's share of the squared gap (Shapley value above over G(∅)), in step order; empty with the steps.
+  std::vector<double> shares;
+  std::vector<DroppedMember> dropped;  ///< in the order dropped
   /// The accepted members fitted jointly; priors and parameters concatenated in step order (gap fields
   /// and Bayes factor against no effect filled). Meaningless when steps is empty.
   EffectResult joint;
@@ -53,9 +82,16 @@ struct Explanation {
   std::vector<ParameterSummary> member_parameters(std::size_t k, const std::vector<EffectCandidate>& candidates) const;
 };
 
-/// The search above, from the single effects of identify_effects (same candidates, f_hz and y_real).
-Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, const Gap& gap_before,
-                    const std::vector<EffectCandidate>& candidates, const Identification& identification,
-                    const IdentificationSettings& settings, Progress& progress);
+/// The search above, from the single effects of identify_effects (same candidates, f_hz, y_real and y_sim,
+/// the simulated side at f_hz).
+Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, const Eigen::ArrayXcd& y_sim,
+                    const Gap& gap_before, const std::vector<EffectCandidate>& candidates,
+                    const Identification& identification, const IdentificationSettings& settings, Progress& progress);
+
+/// The shares above of `members` (candidate indices) at the parameters theta (concatenated in the
+/// members' order), against y_real; y_sim is the prediction of no member. One per member, in its order.
+std::vector<double> member_shares(const std::vector<EffectCandidate>& candidates, const std::vector<std::size_t>& members,
+                                  const std::vector<double>& theta, const Eigen::ArrayXcd& y_real,
+                                  const Eigen::ArrayXcd& y_sim);
 
 }  // namespace admitgen::diagnosis

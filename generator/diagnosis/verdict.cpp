@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace admitgen::diagnosis {
@@ -32,6 +33,14 @@ Verdict decide(const Gap& gap, const Identification& id, const Explanation& expl
     m.parameters.insert(m.parameters.end(), c.fixed.begin(), c.fixed.end());
     v.explanation.push_back(m);
   }
+  for (std::size_t k = 0; k < explanation.shares.size(); ++k) v.shares.push_back({k, explanation.shares[k]});
+  std::stable_sort(v.shares.begin(), v.shares.end(),
+                   [](const VerdictShare& a, const VerdictShare& b) { return a.share > b.share; });
+  if (!v.shares.empty() && v.shares.front().share >= kMainCauseShare) v.main_cause = v.shares.front();
+  for (const auto& d : explanation.dropped) {
+    const EffectCandidate& c = candidates[d.candidate];
+    v.dropped.push_back({c.name, c.name == "material" ? c.priors.front().name : std::string(), d.bayes_factor_deciban});
+  }
   const EffectResult& joint = explanation.joint;
   v.shrink = joint.shrink;
   v.explained = joint.explained;
@@ -49,8 +58,20 @@ std::string describe_decision_rule() {
       "{0:g} deciban better than the explanation without it; stop when none is, when the residual is white, or at "
       "{1} effects); unexplained when that explanation leaves the residual structured (lag-1 |z| >= 3), else the "
       "first effect of the explanation; with a swap step after each addition that leaves structure (an earlier member "
-      "replaced by another effect when that is {0:g} deciban better)",
-      kDecisiveDeciban, kMaxExplanationEffects);
+      "replaced by another effect when that is {0:g} deciban better; once one is, repeated over every member while "
+      "structure is left) and a backward step after each addition (a "
+      "member is dropped when the explanation with it is less than {0:g} deciban better than the one without it: "
+      "within the decision margin the explanation with fewer parameters is kept); members listed by their share of "
+      "the squared gap, the main cause named when its share is at least {2:g}",
+      kDecisiveDeciban, kMaxExplanationEffects, kMainCauseShare);
+}
+
+std::string main_cause_text(const Verdict& v) {
+  if (!v.main_cause) return "";
+  const VerdictMember& m = v.explanation[v.main_cause->member];
+  const std::string name =
+      m.effect == "material" && !m.parameters.empty() ? m.effect + " " + m.parameters.front().first : m.effect;
+  return fmt::format("main cause {} ({:.2f}){}", name, v.main_cause->share, v.white_after ? "" : ", structure left");
 }
 
 }  // namespace admitgen::diagnosis

@@ -22,6 +22,12 @@
 /// Decisive support does not mean the effect is the whole story: on real data the residual is rarely
 /// white, so an effect can be decisively better than none and still explain little; `explained` and
 /// `white_after` say how much is left.
+/// Main cause (docs/diagnosis.md, "Main cause"): the members are listed by their share of the squared
+/// gap (explanation.hpp member_shares), largest first; the member whose share is at least kMainCauseShare
+/// is the main cause, named also when the verdict is unexplained ("main cause X (share), structure
+/// left"): most of the gap is that effect even though something outside the vocabulary is left.
+/// Members the backward step of the search dropped are listed with their Bayes factor (the explanation
+/// with them was within the decision margin of the one without, which has fewer parameters).
 /// The runner-up's margin is reported as well: two effects within a few deciban of each other are
 /// near-degenerate on these data (e.g. reference_plane and temperature both give a phase error ∝ f),
 /// which the report then says.
@@ -31,6 +37,7 @@
 #include "diagnosis/explanation.hpp"
 #include "diagnosis/gap_metrics.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,9 +52,25 @@ struct VerdictMember {
   double shrink_added = 1.0;                               ///< gap of those before it / gap with it
 };
 
+/// One member's share of the squared gap.
+struct VerdictShare {
+  std::size_t member = 0;  ///< index into Verdict::explanation
+  double share = 0.0;      ///< of the squared gap before (the shares add up to `explained`)
+};
+
+/// A member the backward step dropped.
+struct VerdictDropped {
+  std::string effect;
+  std::string parameter;              ///< the catalogue parameter of a material member ("" otherwise)
+  double bayes_factor_deciban = 0.0;  ///< the explanation with it against the one without it (< 20)
+};
+
 struct Verdict {
   std::string effect = "none";  ///< e*, none or unexplained
   std::vector<VerdictMember> explanation;
+  std::vector<VerdictShare> shares;  ///< one per member, largest share first (ties: explanation order)
+  std::optional<VerdictShare> main_cause;  ///< the first of shares when its share ≥ kMainCauseShare
+  std::vector<VerdictDropped> dropped;
   double bayes_factor_deciban = 0.0;  ///< of e* (also when the verdict is none)
   double margin_deciban = 0.0;        ///< BF(e*) − BF(runner-up); +inf when there is no runner-up
   double shrink = 1.0;      ///< of the whole explanation
@@ -62,5 +85,8 @@ Verdict decide(const Gap& gap, const Identification& identification, const Expla
 
 /// The rule in words, written to diagnosis.json.
 std::string describe_decision_rule();
+
+/// "main cause mic_mismatch (0.85), structure left" for a verdict with a main cause ("" without).
+std::string main_cause_text(const Verdict& verdict);
 
 }  // namespace admitgen::diagnosis

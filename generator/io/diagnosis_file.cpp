@@ -94,8 +94,24 @@ Json verdict_json(const VerdictRecord& v) {
                                {"parameters", numbers_by_name_json(m.parameters)},
                                {"log_bayes_factor_deciban", m.log_bayes_factor_deciban},
                                {"shrink_added", m.shrink_added}});
+  const auto share_json = [](const ShareRecord& r) {
+    return Json{{"effect", r.effect}, {"member", r.member}, {"share", r.share}};
+  };
+  Json shares = Json::array();
+  for (const auto& r : v.shares) shares.push_back(share_json(r));
+  Json dropped = Json::array();
+  for (const auto& d : v.dropped) {
+    Json j{{"effect", d.effect}};
+    if (d.parameter) j["parameter"] = *d.parameter;
+    j["log_bayes_factor_deciban"] = d.log_bayes_factor_deciban;
+    j["reason"] = d.reason;
+    dropped.push_back(j);
+  }
   Json j{{"effect", v.effect},
          {"explanation", explanation},
+         {"shares", shares},
+         {"main_cause", v.main_cause ? share_json(*v.main_cause) : Json(nullptr)},
+         {"dropped", dropped},
          {"shrink", v.shrink},
          {"explained_fraction", v.explained_fraction},
          {"band", edges_json(v.band)},
@@ -244,7 +260,31 @@ std::vector<ExplanationMemberRecord> explanation_of_v1(const VerdictRecord& v, c
   return {m};
 }
 
-VerdictRecord read_verdict(const Field& f, bool v1) {
+ShareRecord read_share(const Field& f) {
+  ObjectReader o(f);
+  ShareRecord r;
+  r.effect = o.required("effect").text();
+  r.member = o.required("member").integer();
+  r.share = o.required("share").number();
+  o.finish();
+  return r;
+}
+
+DroppedMemberRecord read_dropped(const Field& f) {
+  ObjectReader o(f);
+  DroppedMemberRecord r;
+  r.effect = o.required("effect").text();
+  if (const auto p = o.optional("parameter")) r.parameter = p->text();
+  r.log_bayes_factor_deciban = o.required("log_bayes_factor_deciban").number();
+  r.reason = o.required("reason").text();
+  o.finish();
+  return r;
+}
+
+/// The verdict of a file of the current schema; of /2 (no shares, main cause or dropped members) and /1
+/// (no explanation either) when `schema` says so.
+VerdictRecord read_verdict(const Field& f, const std::string& schema) {
+  const bool v1 = schema == kDiagnosisSchemaV1;
   ObjectReader o(f);
   VerdictRecord v;
   v.effect = o.required("effect").text();
@@ -259,6 +299,11 @@ VerdictRecord read_verdict(const Field& f, bool v1) {
       r.finish();
       v.explanation.push_back(member);
     }
+  if (schema == kDiagnosisSchema) {
+    for (const auto& s : o.required("shares").elements()) v.shares.push_back(read_share(s));
+    if (const Field m = o.required("main_cause"); !m.json().is_null()) v.main_cause = read_share(m);
+    for (const auto& d : o.required("dropped").elements()) v.dropped.push_back(read_dropped(d));
+  }
   v.shrink = o.required("shrink").number();
   v.explained_fraction = o.required("explained_fraction").number();
   v.band = read_edges(o.required("band"));
@@ -339,8 +384,13 @@ std::string diagnosis_text(const DiagnosisRecord& d) {
 
 DiagnosisRecord parse_diagnosis(const std::string& text, const std::string& file) {
   const Json doc = parse_json(text, file);
-  const bool v1 = doc.is_object() && doc.contains("schema") && doc["schema"] == kDiagnosisSchemaV1;
-  ObjectReader o(document_root(doc, file, v1 ? kDiagnosisSchemaV1 : kDiagnosisSchema, "diagnosis"));
+  // Older schemas are read as the current one: what they lack stays empty.
+  std::string schema = kDiagnosisSchema;
+  if (doc.is_object() && doc.contains("schema"))
+    for (const char* older : {kDiagnosisSchemaV1, kDiagnosisSchemaV2})
+      if (doc["schema"] == older) schema = older;
+  const bool v1 = schema == kDiagnosisSchemaV1;
+  ObjectReader o(document_root(doc, file, schema.c_str(), "diagnosis"));
   DiagnosisRecord d;
   d.schema = o.required("schema").text();
   d.version = o.required("version").text();
@@ -350,11 +400,9 @@ DiagnosisRecord parse_diagnosis(const std::string& text, const std::string& file
   for (const auto& s : o.required("stages").elements()) d.stages.push_back(read_stage(s));
   d.log_evidence_none = o.required("log_evidence_none").number();
   for (const auto& e : o.required("effects").elements()) d.effects.push_back(read_effect(e));
-  d.verdict = read_verdict(o.required("verdict"), v1);
-  if (v1) {  // read as the current schema: the verdict's one effect is its explanation
-    d.verdict.explanation = explanation_of_v1(d.verdict, d.effects);
-    d.schema = kDiagnosisSchema;
-  }
+  d.verdict = read_verdict(o.required("verdict"), schema);
+  if (v1) d.verdict.explanation = explanation_of_v1(d.verdict, d.effects);  // its one effect is its explanation
+  d.schema = kDiagnosisSchema;
   o.finish();
   return d;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 /// @file
 /// diagnosis.json (docs/formats.md, "diagnosis.json"): the one reader and the one writer of the diagnosis
-/// file. They own its keys, their order and the schema version ("admitgen.diagnosis/2"); everything else
+/// file. They own its keys, their order and the schema version ("admitgen.diagnosis/3"); everything else
 /// takes the typed record, diagnosis/diagnosis_record.hpp. Deterministic: no timing, numbers in shortest
 /// round-trip form.
 #pragma once
@@ -15,9 +15,10 @@ namespace admitgen::io {
 /// diagnosis.json's text: the record as JSON indented by 2, then a newline.
 std::string diagnosis_text(const diagnosis::DiagnosisRecord& diagnosis);
 
-/// The record of diagnosis.json text. An "admitgen.diagnosis/1" file (before combined explanations) is
-/// read too, as the current schema: its verdict's one effect, with the parameters of that effect's
-/// entry, becomes the explanation (none: empty). Throws FileError naming `file` when the text is not JSON, has
+/// The record of diagnosis.json text. Older files are read too, as the current schema: an
+/// "admitgen.diagnosis/2" file (before shares, main cause and dropped members) with those empty; an
+/// "admitgen.diagnosis/1" file (before combined explanations) with its verdict's one effect, with the
+/// parameters of that effect's entry, as the explanation (none: empty). Throws FileError naming `file` when the text is not JSON, has
 /// another schema, lacks a key, holds an unknown key or a value of the wrong type (naming key and value).
 diagnosis::DiagnosisRecord parse_diagnosis(const std::string& text, const std::string& file);
 

@@ -111,19 +111,28 @@ std::string explanation_member_text(const diagnosis::ExplanationMemberRecord& m)
 
 std::string explanation_table(const DiagnosisRecord& d) {
   Table t{{"step", "effect", "parameters (joint posterior mean)", "Bayes factor against the explanation without it [dB]",
-           "shrink it adds"},
-          {}, {0, 3, 4}, {}, {}};
-  int step = 1;
-  for (const auto& m : d.verdict.explanation) {
+           "shrink it adds", "share of the squared gap"},
+          {}, {0, 3, 4, 5}, {}, {}};
+  const auto share_of = [&d](std::size_t k) {
+    for (const auto& s : d.verdict.shares)
+      if (static_cast<std::size_t>(s.member) == k) return fmt::format("{:.2f}", s.share);
+    return std::string("—");
+  };
+  for (std::size_t k = 0; k < d.verdict.explanation.size(); ++k) {
+    const auto& m = d.verdict.explanation[k];
     std::string params;
     for (const auto& [name, value] : m.parameters)
       params += fmt::format("{}<code>{}</code> = {}", params.empty() ? "" : "<br/>", escape_xml(name), number(value));
-    t.rows.push_back({std::to_string(step++), "<code>" + escape_xml(m.effect) + "</code>", params.empty() ? "—" : params,
-                      fmt::format("{:.1f}", m.log_bayes_factor_deciban), fmt::format("{:.2f}×", m.shrink_added)});
+    t.rows.push_back({std::to_string(k + 1), "<code>" + escape_xml(m.effect) + "</code>", params.empty() ? "—" : params,
+                      fmt::format("{:.1f}", m.log_bayes_factor_deciban), fmt::format("{:.2f}×", m.shrink_added),
+                      share_of(k)});
   }
   t.caption = fmt::format(
       "Effects added one at a time, each fitted jointly with those before it and kept only if decisively (≥ 20 dB) "
-      "better than the explanation without it. Whole explanation: shrink {}×, {} % of the squared gap, residual {}.",
+      "better than the explanation without it (a member that stops earning its place is dropped again); the share "
+      "is the member's part of the squared gap at the joint fit (its Shapley value; the shares add up to the "
+      "explained fraction). Whole "
+      "explanation: shrink {}×, {} % of the squared gap, residual {}.",
       fmt::format("{:.2f}", d.verdict.shrink), fmt::format("{:.0f}", 100.0 * d.verdict.explained_fraction),
       d.verdict.residual_white_after ? "white" : "structured");
   return html(t);
@@ -184,6 +193,23 @@ std::string provenance(const DiagnosisRecord& d) {
        {"admitgen", escape_xml(d.version)}});
 }
 
+/// "mic_mismatch", or "material 1.sigma" for a catalogue member.
+std::string share_member_text(const diagnosis::VerdictRecord& v, const diagnosis::ShareRecord& s) {
+  const auto& m = v.explanation[static_cast<std::size_t>(s.member)];
+  return m.effect == "material" && !m.parameters.empty() ? m.effect + " " + m.parameters.front().first : m.effect;
+}
+
+/// " Dropped: …" naming the members the backward step took out ("" when none).
+std::string dropped_text(const diagnosis::VerdictRecord& v) {
+  std::string out;
+  for (const auto& d : v.dropped)
+    out += fmt::format("{}{}{} ({} dB)", out.empty() ? "" : ", ", d.effect, d.parameter ? " " + *d.parameter : "",
+                       number(d.log_bayes_factor_deciban, 3));
+  return out.empty() ? out
+                     : " Dropped, because the explanation with them was within the 20 dB decision margin of the one "
+                       "without them (the one with fewer parameters is kept): " + out + ".";
+}
+
 }  // namespace
 
 std::string verdict_sentence(const DiagnosisRecord& d) {
@@ -206,18 +232,26 @@ std::string verdict_sentence(const DiagnosisRecord& d) {
   std::string members;
   for (std::size_t k = 0; k < v.explanation.size(); ++k)
     members += (k == 0 ? "" : k + 1 == v.explanation.size() ? " and " : ", ") + explanation_member_text(v.explanation[k]);
+  if (v.effect == "unexplained" && v.main_cause)
+    return fmt::format(
+        "Main cause {} ({} of the squared gap), structure left: the best explanation the vocabulary offers, {}, "
+        "shrinks the gap {}× ({} % of the squared gap) and still leaves structure in the residual, so part of the "
+        "cause lies outside the tested effects.{}",
+        share_member_text(v, *v.main_cause), fmt::format("{:.2f}", v.main_cause->share), members,
+        fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction), dropped_text(v));
   if (v.effect == "unexplained")
     return fmt::format(
         "The gap is real but unexplained: the best explanation the vocabulary offers, {}, shrinks it {}× ({} % of the "
-        "squared gap) and still leaves structure in the residual, so the cause lies outside the tested effects.",
-        members, fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction));
+        "squared gap) and still leaves structure in the residual, so the cause lies outside the tested effects.{}",
+        members, fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction), dropped_text(v));
   return fmt::format(
       "The gap is explained by {} (the first alone: Bayes factor {} dB against no effect{}): together they shrink the "
       "gap {}× ({} % of the squared gap), most in the {}{}.",
       members, number(v.log_bayes_factor_deciban, 4),
       v.margin_deciban ? fmt::format(", {} dB ahead of the next", number(*v.margin_deciban, 3)) : std::string(),
       fmt::format("{:.2f}", v.shrink), fmt::format("{:.0f}", 100.0 * v.explained_fraction), band_text(v.band),
-      v.residual_white_after ? "; the residual left is white" : "; structure is left in the residual");
+      v.residual_white_after ? "; the residual left is white" : "; structure is left in the residual") +
+         dropped_text(v);
 }
 
 std::vector<plot::Figure> diagnosis_figures(const DiagnosisRecord& d) {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
@@ -45,8 +46,16 @@ TEST_CASE("diagnose CLI: finds a frame resonance, writes diagnosis.json, byte-id
   const std::string a = read_text(dir + "/a/diagnosis.json");
   CHECK(a == read_text(dir + "/b/diagnosis.json"));
   const auto j = nlohmann::json::parse(a);
-  CHECK(j["schema"] == "admitgen.diagnosis/2");
+  CHECK(j["schema"] == "admitgen.diagnosis/3");
   CHECK(j["verdict"]["effect"] == "frame_resonance");
+  // One member: its share of the squared gap is the whole explained fraction (docs/diagnosis.md, "Main
+  // cause"), computed the other way round (1 − 1/shrink²); both are ratios of the same sums, so 1e-12.
+  REQUIRE(j["verdict"]["shares"].size() == 1);
+  CHECK(std::abs(j["verdict"]["shares"][0]["share"].get<double>() - j["verdict"]["explained_fraction"].get<double>()) < 1e-12);
+  CHECK(j["verdict"]["main_cause"]["effect"] == "frame_resonance");
+  CHECK(j["verdict"]["dropped"].empty());
+  CHECK(first.output.find("verdict: frame_resonance - main cause frame_resonance (") != std::string::npos);
+  CHECK(first.output.find("shares of the squared gap: frame_resonance ") != std::string::npos);
   CHECK(j["effects"][0]["effect"] == "frame_resonance");
   CHECK(j["effects"][0]["parameters"]["f0_hz"].get<double>() == doctest::Approx(700.0).epsilon(0.02));
   CHECK(j["gap"]["bands"].size() > 5);

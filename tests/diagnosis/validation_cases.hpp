@@ -51,6 +51,8 @@ struct ValidationCase {
   std::string effect;       ///< synth --effect text ("" for a control)
   std::string second;       ///< a second effect (two-effect cases), its documented name in truth_second
   std::string truth_second;
+  std::string third;        ///< a third effect (three-effect cases), its documented name in truth_third
+  std::string truth_third;
   std::string real_spec;    ///< the real sample's SPEC when it differs from the simulated one ("" = the same)
   std::string parameter;    ///< catalogue-parameter cases: the SPEC parameter that is off ("1.sigma")
   double ratio = 1.0;       ///< and by how much
@@ -72,7 +74,7 @@ inline TubeSetup case_tube(const ValidationCase& c) { return {c.tube_diameter_m,
 inline SynthesisRequest truth_request(const ValidationCase& c, bool noise) {
   SynthesisRequest request{parse_material_spec(c.real_spec.empty() ? c.material.spec : c.real_spec), {},
                            log_spaced_frequencies(100.0, 2000.0, 120), noise ? kNoise : 0.0, c.seed, case_tube(c)};
-  for (const auto& text : {c.effect, c.second})
+  for (const auto& text : {c.effect, c.second, c.third})
     if (!text.empty() && (noise || effect_name(parse_effect(text)) != "heteroscedastic_noise"))
       request.effects.push_back(parse_effect(text));  // heteroscedastic_noise shapes the noise only
   return request;

@@ -100,20 +100,57 @@ TEST_CASE("fit.json: a newer admitgen may add keys (skipped), an equal or older 
   CHECK(error_of([&] { (void)io::parse_fit(newer_missing, "f.json"); }) == "f.json: missing key 'input.points'");
 }
 
-TEST_CASE("diagnosis.json: the bundled diagnoses read into records that write back byte for byte") {
+TEST_CASE("diagnosis.json: the bundled diagnoses (schema /2) read as the current schema and write back byte for byte") {
   for (const char* name : {"diagnosis/round_vs_rect_5cm/diagnosis.json", "diagnosis/round_vs_rect_10cm/diagnosis.json"}) {
     CAPTURE(name);
     const std::string text = test::read_text(test::sample(name));
+    REQUIRE(text.find("\"schema\": \"admitgen.diagnosis/2\"") != std::string::npos);
     const auto d = io::parse_diagnosis(text, name);
-    CHECK(io::diagnosis_text(d) == text);
+    CHECK(d.schema == "admitgen.diagnosis/3");
+    // What /2 lacks stays empty: no shares, no main cause, no dropped member.
+    CHECK(d.verdict.shares.empty());
+    CHECK_FALSE(d.verdict.main_cause);
+    CHECK(d.verdict.dropped.empty());
+    CHECK_FALSE(d.verdict.explanation.empty());
+    // Written as /3, the text reads back into the same record and writes back byte for byte.
+    const std::string current = io::diagnosis_text(d);
+    CHECK(io::diagnosis_text(io::parse_diagnosis(current, name)) == current);
     CHECK_FALSE(d.gap.bands.empty());
   }
-  const std::string good = test::read_text(test::sample("diagnosis/round_vs_rect_5cm/diagnosis.json"));
+  const std::string good =
+      io::diagnosis_text(io::parse_diagnosis(test::read_text(test::sample("diagnosis/round_vs_rect_5cm/diagnosis.json")), "d"));
   const auto error = [](const std::string& text) { return error_of([&] { (void)io::parse_diagnosis(text, "d.json"); }); };
-  CHECK(error(R"({"schema": "admitgen.fit/1"})") == "d.json: JSON but not an admitgen diagnosis (schema admitgen.diagnosis/2)");
+  CHECK(error(R"({"schema": "admitgen.fit/1"})") == "d.json: JSON but not an admitgen diagnosis (schema admitgen.diagnosis/3)");
   CHECK(error(replaced(good, "\"log_evidence_none\"", "\"log_evidence_nothing\"")) == "d.json: missing key 'log_evidence_none'");
   CHECK(error(replaced(good, "\"white\": ", "\"white\": 1, \"w\": ")) ==
         "d.json: expected true or false at key 'gap.whiteness.white' (value '1')");
+  // A /3 file must hold the new keys.
+  CHECK(error(replaced(good, "\"main_cause\": null,", "")) == "d.json: missing key 'verdict.main_cause'");
+}
+
+TEST_CASE("diagnosis.json: shares, the main cause and dropped members are written and read back") {
+  const std::string name = "diagnosis/round_vs_rect_5cm/diagnosis.json";
+  auto d = io::parse_diagnosis(test::read_text(test::sample(name)), name);
+  REQUIRE(d.verdict.explanation.size() == 3);
+  d.verdict.shares = {{d.verdict.explanation[1].effect, 1, 0.625}, {d.verdict.explanation[0].effect, 0, 0.0625},
+                      {d.verdict.explanation[2].effect, 2, -0.015625}};
+  d.verdict.main_cause = d.verdict.shares.front();
+  d.verdict.dropped = {{"material", std::string("1.d"), 12.5, "within the margin"}, {"temperature", std::nullopt, -3.25, "r"}};
+  const std::string text = io::diagnosis_text(d);
+  CHECK(text.find("\"main_cause\": {\n      \"effect\": \"" + d.verdict.explanation[1].effect +
+                  "\",\n      \"member\": 1,\n      \"share\": 0.625\n    }") != std::string::npos);
+  CHECK(text.find("\"parameter\": \"1.d\"") != std::string::npos);
+  const auto back = io::parse_diagnosis(text, "d.json");
+  REQUIRE(back.verdict.shares.size() == 3);
+  CHECK(back.verdict.shares[2].member == 2);
+  CHECK(back.verdict.shares[2].share == -0.015625);
+  REQUIRE(back.verdict.main_cause);
+  CHECK(back.verdict.main_cause->share == 0.625);
+  REQUIRE(back.verdict.dropped.size() == 2);
+  CHECK(back.verdict.dropped[0].parameter == std::optional<std::string>("1.d"));
+  CHECK_FALSE(back.verdict.dropped[1].parameter);
+  CHECK(back.verdict.dropped[1].log_bayes_factor_deciban == -3.25);
+  CHECK(io::diagnosis_text(back) == text);
 }
 
 TEST_CASE("diagnosis.json: an admitgen.diagnosis/1 file is read, its verdict effect becoming the explanation") {
@@ -129,7 +166,7 @@ TEST_CASE("diagnosis.json: an admitgen.diagnosis/1 file is read, its verdict eff
   const auto end = text.find("\"shrink\":", start);
   text.erase(start, end - start);
   const auto v1 = io::parse_diagnosis(text, "old.json");
-  CHECK(v1.schema == "admitgen.diagnosis/2");
+  CHECK(v1.schema == "admitgen.diagnosis/3");
   REQUIRE(v1.verdict.explanation.size() == 1);
   CHECK(v1.verdict.explanation[0].effect == current.effects[1].effect);
   CHECK(v1.verdict.explanation[0].parameters == current.effects[1].parameters);
