@@ -5,11 +5,13 @@
 // closed form (two linear constraints, solved by enumerating their active sets), minimised over the pole by
 // brute force on a fine grid and golden-section refinement.
 #include "core/rng.hpp"
+#include "io/fit_file.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
 #include "model/residue_basis.hpp"
 #include "passivity/passive_estimate.hpp"
 #include "passivity/pole_refit.hpp"
+#include "test_support.hpp"
 
 #include <doctest/doctest.h>
 
@@ -227,4 +229,39 @@ TEST_CASE("passive estimate: where passivity costs more than 1.25x the best samp
   MESSAGE(warning);
   CHECK(warning.find("passivity costs") != std::string::npos);
   CHECK(warning.find(fmt::format("{:.4g} nats", e.best_sample_log_likelihood - e.log_likelihood)) != std::string::npos);
+}
+
+TEST_CASE("pole refit: canonical terms leave G unchanged and report beta >= 0, lambda and beta ascending") {
+  const Order order(2, 2);
+  Eigen::VectorXd th(order.dim());
+  th << 0.3, 900.0, 5000.0, 200.0, 800.0,  // λ out of order
+      10.0, 40.0, 300.0, -7000.0,           // β < 0, and above the next pair's |β|
+      5.0, -3.0, 200.0, 2000.0;
+  const Eigen::VectorXd c = passivity::canonical_terms(order, th);
+  CHECK(c[Order::lambda(0)] == 800.0);
+  CHECK(c[Order::lambda(1)] == 5000.0);
+  CHECK(c[order.beta(0)] == 2000.0);
+  CHECK(c[order.beta(1)] == 7000.0);
+  CHECK(c[order.c(1)] == -40.0);
+  const Eigen::ArrayXd w = log_omega(10.0, 10000.0, 50);
+  // The same five terms summed in another order differ by a few ε of the largest term, which is within 10×
+  // of max|G| here: 1e-12 of max|G| bounds that with a wide margin.
+  const Eigen::ArrayXcd g = evaluate_multipole(order, th, w);
+  CHECK((evaluate_multipole(order, c, w) - g).abs().maxCoeff() <= 1e-12 * g.abs().maxCoeff());
+}
+
+TEST_CASE("fit.json: the pole search's keys read and write back byte for byte") {
+  // The golden fit holds a searched passive estimate (sampled_poles_relative_rms_residual, pole_search_steps);
+  // passivity_cost is added by hand.
+  const std::string golden = test::read_text(test::sample("../tests/golden/expected/fit.json"));
+  REQUIRE(golden.find("\"pole_search_steps\"") != std::string::npos);
+  CHECK(io::fit_text(io::parse_fit(golden, "golden")) == golden);
+  const std::string key = "\"pole_search_steps\": ";
+  const auto at = golden.find('\n', golden.find(key));
+  const std::string edited = golden.substr(0, at) + ",\n        \"passivity_cost\": \"why\"" + golden.substr(at);
+  const FitRecord fit = io::parse_fit(edited, "edited");
+  int costs = 0;
+  for (const auto& m : fit.models) costs += m.passive_estimate && m.passive_estimate->passivity_cost == std::string("why");
+  CHECK(costs == 1);
+  CHECK(io::fit_text(fit) == edited);
 }
