@@ -20,6 +20,11 @@ constexpr double kMarginFraction = 1e-9;
 constexpr double kRelativeTolerance = 1e-7;
 /// Stop when the damping exceeds this multiple of D²: the step is then shorter than rounding.
 constexpr double kMaxDamping = 1e12;
+/// The largest step of a pole in one iteration: a rate by a factor of 10 (|δ ln x| ≤ ln 10), β by 10× the
+/// pair's modulus |α + jβ|. Keeps every trial finite (an undamped first step can ask for e^50) while letting
+/// a pole cross the band in a few steps.
+constexpr double kMaxLogStep = 2.302585092994046;
+constexpr double kMaxBetaStep = 10.0;
 
 /// Index into θ of pole coordinate k (ψ = λ_1..λ_Q, α_1, β_1, .., α_S, β_S).
 int pole_index(const Order& order, int k) {
@@ -41,8 +46,9 @@ void to_step_coordinates(const Order& order, const Eigen::VectorXd& theta, Eigen
 struct Linearisation {
   Eigen::MatrixXd j;       ///< 2N × (p + m): [A, ∂(A r)/∂u]
   Eigen::VectorXd eps;     ///< f − A r
-  Eigen::MatrixXd c;       ///< |Ω| × (p + m): ∂ Re G(ω_j) / ∂(r, u)
+  Eigen::MatrixXd c;       ///< (|Ω| + 2m) × (p + m): ∂ Re G(ω_j) / ∂(r, u), then the step bounds' rows
   Eigen::VectorXd re_g;    ///< Re G(ω_j)
+  Eigen::VectorXd bounds;  ///< right-hand sides of the step bounds' rows (kMaxLogStep, kMaxBetaStep)
 };
 
 Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
@@ -66,9 +72,18 @@ Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const 
   const Eigen::MatrixXd g = residue_basis(order, theta, w).re;
   Eigen::MatrixXd dg = pole_derivatives(order, theta, w).re;
   to_step_coordinates(order, theta, dg);
-  l.c.resize(g.rows(), p + m);
-  l.c << g, dg;
+  l.c = Eigen::MatrixXd::Zero(g.rows() + 2 * m, p + m);
+  l.c.topRows(g.rows()) << g, dg;
   l.re_g = g * r;
+  l.bounds = Eigen::VectorXd::Zero(2 * m);
+  for (int k = 0; k < m; ++k) {  // −b_k ≤ δu_k ≤ b_k as two rows ±δu_k ≥ −b_k
+    const int s = (k - order.q()) / 2;
+    const double b = is_rate(order, k) ? kMaxLogStep
+                                       : kMaxBetaStep * std::hypot(theta[order.alpha(s)], theta[order.beta(s)]);
+    l.c(g.rows() + 2 * k, p + k) = 1.0;
+    l.c(g.rows() + 2 * k + 1, p + k) = -1.0;
+    l.bounds[2 * k] = l.bounds[2 * k + 1] = -b;
+  }
   return l;
 }
 
@@ -126,7 +141,9 @@ PoleRefit refit_poles(const Order& order, const Eigen::VectorXd& start, const Re
     Eigen::VectorXd f = Eigen::VectorXd::Zero(e.rows());
     f.head(l.eps.size()) = l.eps;
     // At margin δ (the current point meets 2δ): δ = 0 is strictly feasible, so the LSI always has a solution.
-    const auto step = numerics::least_squares_inequality(e, f, l.c, (margin - l.re_g.array()).matrix());
+    Eigen::VectorXd h(l.c.rows());
+    h << (margin - l.re_g.array()).matrix(), l.bounds;
+    const auto step = numerics::least_squares_inequality(e, f, l.c, h);
     if (!step.feasible || !step.x.allFinite()) break;
     const double predicted = l.eps.squaredNorm() - (l.eps - l.j * step.x).squaredNorm();
     const ProjectedResidues trial = project_residues(order, moved(order, out.theta, step.x.tail(m)), target);

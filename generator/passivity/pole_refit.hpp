@@ -16,7 +16,8 @@
 ///   min_δ ‖J δ − ε‖² + μ‖D δ‖²   s.t.   Re G_j + ∇Re G_j · δ ≥ δ_margin   (ω_j ∈ Ω),
 ///
 /// J = ∂(model)/∂(r, u) (u = ln λ, ln α, β: rates stay positive), ε the residual, D² = diag JᵀJ (kept at its
-/// running maximum). Only the poles of the step are kept; the residues are r*(ψ + δψ), so every point visited
+/// running maximum), and each pole's step bounded (a rate by a factor 10, β by 10× the pair's modulus, so
+/// every trial stays finite). Only the poles of the step are kept; the residues are r*(ψ + δψ), so every point visited
 /// is passive on Ω and F never increases. The caller certifies the result for every ω (the Hamiltonian test,
 /// in passive_residues).
 #pragma once
