@@ -48,6 +48,7 @@ PassiveEstimate from_sample(const Order& order, const Eigen::VectorXd& sample, i
 PassiveEstimate searched(const Order& order, const PassiveEstimate& start, const ResidueTarget& target,
                          const Likelihood& likelihood) {
   const PoleRefit refit = refit_poles(order, start.theta, target, PassiveEstimate::kMaxSteps);
+  if (refit.accepted == 0) return start;  // the start's poles are a local optimum already
   const PassiveResidues p = passive_residues(order, canonical_terms(order, refit.theta), target);
   PassiveEstimate e = start;
   e.theta = p.theta;

@@ -96,8 +96,12 @@ PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& thet
       const Eigen::MatrixXd g = residue_basis(order, theta, w).re;  // Re G(jω_j) = g_j · r
       // Solved with 2δ: the slack absorbs the dips of Re G between constraint points (each would cost a round).
       const auto sol = numerics::least_squares_inequality(e, f, g, Eigen::VectorXd::Constant(g.rows(), 2.0 * margin));
-      ADMITGEN_ENSURE(sol.feasible, "passive residues: constraints Re G >= margin are infeasible (cannot happen: "
-                                    "r = (margin, 0, ...) satisfies them)");
+      // r = (2δ, 0, …) is feasible in exact arithmetic; a solve that says otherwise (or overflows) met a basis
+      // too ill-conditioned for it (nearly coincident poles): reported as not certified, never hidden.
+      if (!sol.feasible || !sol.x.allFinite()) {
+        out.solve_failed = true;
+        return out;
+      }
       set_residues(order, sol.x, out.theta);
       out.constraints = static_cast<int>(omega.size());
       out.certificate = continuous_passivity(order, out.theta.data());

@@ -39,6 +39,9 @@ struct PassiveResidues {
   int rounds = 0;                      ///< constraint-generation rounds (1 = the first grid sufficed)
   int constraints = 0;                 ///< size of the final constraint set Ω
   double margin_fraction = 0.0;        ///< δ / max|t| of the certified solution (1e-9 unless it needed more)
+  /// The constraint solve failed numerically (a basis too ill-conditioned for it: nearly coincident poles);
+  /// theta then holds the residues of the last successful round, or the input's. Not certified.
+  bool solve_failed = false;
 };
 
 /// The margin δ = fraction · max|t| of the constraints Re G ≥ δ (fraction 1e-9 first, see the file comment).
@@ -55,8 +58,8 @@ void weighted_system(const Order& order, const Eigen::VectorXd& theta, const Res
                      Eigen::VectorXd& f);
 
 /// Residues of `theta`'s poles (its residues are ignored) closest to `target` subject to passivity.
-/// Requires every λ, α > 0. Not certified only if the rounds of every margin are exhausted (reported, never
-/// hidden).
+/// Requires every λ, α > 0. Not certified only if the rounds of every margin are exhausted or the solve fails
+/// (solve_failed; reported, never hidden).
 PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
 
 }  // namespace admitgen::passivity

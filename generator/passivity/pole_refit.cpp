@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "passivity/pole_refit.hpp"
 
-#include "core/errors.hpp"
 #include "model/residue_basis.hpp"
 #include "numerics/least_squares_inequality.hpp"
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -25,6 +27,18 @@ constexpr double kMaxDamping = 1e12;
 /// a pole cross the band in a few steps.
 constexpr double kMaxLogStep = 2.302585092994046;
 constexpr double kMaxBetaStep = 10.0;
+/// Pole sets whose equilibrated residue basis has a reciprocal condition number below this are refused: two
+/// poles merging (an over-complete order) make the basis rank-deficient, the residues huge and cancelling,
+/// and the constraint solve unreliable. 1e-10 keeps ~6 significant digits in the residues.
+constexpr double kMinReciprocalCondition = 1e-10;
+
+/// |R_pp| / |R_11| of the column-pivoted QR of E with unit-norm columns: an estimate of 1/cond(E).
+double reciprocal_condition(const Eigen::MatrixXd& e) {
+  const Eigen::VectorXd norms = e.colwise().norm().transpose().cwiseMax(1e-300);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(e * norms.cwiseInverse().asDiagonal());
+  const Eigen::VectorXd r = qr.matrixR().diagonal().cwiseAbs();
+  return r.size() == 0 || r[0] == 0.0 ? 0.0 : r[r.size() - 1] / r[0];
+}
 
 /// Index into θ of pole coordinate k (ψ = λ_1..λ_Q, α_1, β_1, .., α_S, β_S).
 int pole_index(const Order& order, int k) {
@@ -103,13 +117,14 @@ ProjectedResidues project_residues(const Order& order, const Eigen::VectorXd& th
   Eigen::MatrixXd e;
   Eigen::VectorXd f;
   weighted_system(order, theta, target, e, f);
+  ProjectedResidues out;
+  out.theta = theta;
+  if (!e.allFinite() || reciprocal_condition(e) < kMinReciprocalCondition) return out;
   const std::vector<double> grid = constraint_grid(order, theta, target);
   const Eigen::ArrayXd w = Eigen::Map<const Eigen::ArrayXd>(grid.data(), Eigen::Index(grid.size()));
   const Eigen::MatrixXd g = residue_basis(order, theta, w).re;
   const double margin = constraint_margin(target, kMarginFraction);
   const auto sol = numerics::least_squares_inequality(e, f, g, Eigen::VectorXd::Constant(g.rows(), 2.0 * margin));
-  ProjectedResidues out;
-  out.theta = theta;
   if (!sol.feasible || !sol.x.allFinite()) return out;
   out.feasible = true;
   set_residues(order, sol.x, out.theta);
@@ -119,13 +134,14 @@ ProjectedResidues project_residues(const Order& order, const Eigen::VectorXd& th
 
 PoleRefit refit_poles(const Order& order, const Eigen::VectorXd& start, const ResidueTarget& target, int max_steps) {
   const ProjectedResidues first = project_residues(order, start, target);
-  ADMITGEN_ENSURE(first.feasible, "pole refit of {}: the start's passive residues are infeasible (cannot happen: "
-                                  "r = (margin, 0, ...) satisfies the constraints)", order.name());
   PoleRefit out;
   out.theta = first.theta;
   out.start_sum_squares = out.sum_squares = first.sum_squares;
   const int p = residue_count(order), m = order.buffers();
-  if (m == 0) return out;
+  if (m == 0 || !first.feasible) {  // an ill-conditioned start (nearly coincident poles) is not searched from
+    if (!first.feasible) out.start_sum_squares = out.sum_squares = std::numeric_limits<double>::infinity();
+    return out;
+  }
   const double margin = constraint_margin(target, kMarginFraction);
   Eigen::VectorXd d2 = Eigen::VectorXd::Zero(p + m);
   double mu = -1.0, nu = 2.0;  // damping relative to D² (set at the first step), Nielsen's growth factor

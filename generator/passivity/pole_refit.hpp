@@ -46,7 +46,9 @@ struct ProjectedResidues {
 };
 ProjectedResidues project_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
 
-/// Minimises F from the poles of `start` (its residues are ignored) in at most `max_steps` steps.
+/// Minimises F from the poles of `start` (its residues are ignored) in at most `max_steps` steps. Pole sets
+/// whose residue basis is too ill-conditioned for the constraint solve (nearly coincident poles) are never
+/// entered; a start that is one is returned unsearched (accepted = 0, F = +∞).
 /// Deterministic: no randomness, a fixed sequence of floating-point operations.
 PoleRefit refit_poles(const Order& order, const Eigen::VectorXd& start, const ResidueTarget& target, int max_steps);
 

@@ -265,3 +265,20 @@ TEST_CASE("fit.json: the pole search's keys read and write back byte for byte") 
   CHECK(costs == 1);
   CHECK(io::fit_text(fit) == edited);
 }
+
+TEST_CASE("pole refit: coincident poles (a rank-deficient basis) are refused, never a crash") {
+  // Two real poles at the same λ make the residue basis rank-deficient: the refit does not start from them, and
+  // the passive estimate either certifies a result or reports it as not certified.
+  const Order order(2, 0);
+  const double lam0 = kTwoPi * 1000.0;
+  const Eigen::ArrayXd w = log_omega(100.0, 1500.0, 80);
+  const Eigen::ArrayXcd d = -0.3 + 1.3 * lam0 / (lam0 + std::complex<double>(0.0, 1.0) * w);
+  Eigen::VectorXd start(order.dim());
+  start << -0.3, 0.65 * lam0, lam0, 0.65 * lam0, lam0;
+  const passivity::ResidueTarget target{w, d, Eigen::ArrayXd::Ones(w.size())};
+  const auto refit = passivity::refit_poles(order, start, target, 60);
+  CHECK(refit.accepted == 0);
+  CHECK(std::isinf(refit.sum_squares));
+  const auto e = passivity::passive_estimate(measurement(w, d), order, {start}, DataCount::two_per_point);
+  CHECK(e.certified == continuous_passivity(order, e.theta.data()).passive);
+}
