@@ -4,7 +4,8 @@
 /// docs/passivity.md, "Searching the poles"). For each order's posterior draws (posterior_QxSy.csv, as `fit`
 /// writes them) it takes the 16 draws of highest likelihood as the candidates and prints, per order: the best
 /// draw's relative RMS residual, the passive estimate's with the sampled poles only and with the pole search,
-/// the ratio to the best draw, and the seconds each took (one thread).
+/// the ratio to the best draw, and the CPU seconds each took (one thread; CPU time, so that other work on the
+/// machine does not count).
 /// Usage: bench_passive_estimate FIT_DIR DATA.csv [COLUMNS] [STARTS]
 /// (the posterior's draws are equal-weight resamples, so their best is close to, not the same as, the run's).
 #include "data/csv_reader.hpp"
@@ -14,7 +15,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -22,11 +23,10 @@
 #include <vector>
 
 using namespace admitgen;
-using Clock = std::chrono::steady_clock;
-
 namespace {
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+/// CPU seconds of this process since `t` (std::clock).
+double seconds_since(std::clock_t t) { return double(std::clock() - t) / CLOCKS_PER_SEC; }
 
 /// The rows of a posterior CSV (header skipped), each a θ packed as model/order.hpp.
 std::vector<Eigen::VectorXd> read_draws(const std::string& path, const Order& order) {
@@ -74,10 +74,10 @@ int main(int argc, char** argv) {
     std::sort(ranked.begin(), ranked.end());
     std::vector<Eigen::VectorXd> candidates;
     for (std::size_t k = 0; k < std::min<std::size_t>(16, ranked.size()); ++k) candidates.push_back(draws[ranked[k].second]);
-    auto t = Clock::now();
+    std::clock_t t = std::clock();
     const auto sampled = passivity::passive_estimate(data, order, candidates, DataCount::two_per_point, 0);
     const double t_sampled = seconds_since(t);
-    t = Clock::now();
+    t = std::clock();
     const auto searched = passivity::passive_estimate(data, order, candidates, DataCount::two_per_point, starts);
     const double t_search = seconds_since(t);
     total_sampled += t_sampled;

@@ -27,6 +27,13 @@ constexpr double kMaxDamping = 1e12;
 /// a pole cross the band in a few steps.
 constexpr double kMaxLogStep = 2.302585092994046;
 constexpr double kMaxBetaStep = 10.0;
+/// The box the search stays in (docs/passivity.md, "Searching the poles"), unless the start lies outside it:
+/// λ ≥ ω_min/10 (a real pole further below the band acts there as A/jω, whatever λ, so the data cannot place
+/// it, and a near-DC pole makes float filters stall: a limit cycle), α ≥ the smallest spacing of the data
+/// frequencies (a resonance narrower than that is not resolved), rates ≤ 10 ω_max and |β| ≤ 10 ω_max.
+constexpr double kLambdaFloor = 0.1;
+constexpr double kCeiling = 10.0;
+
 /// Pole sets whose equilibrated residue basis has a reciprocal condition number below this are refused: two
 /// poles merging (an over-complete order) make the basis rank-deficient, the residues huge and cancelling,
 /// and the constraint solve unreliable. 1e-10 keeps ~6 significant digits in the residues.
@@ -62,10 +69,40 @@ struct Linearisation {
   Eigen::VectorXd eps;     ///< f − A r
   Eigen::MatrixXd c;       ///< (|Ω| + 2m) × (p + m): ∂ Re G(ω_j) / ∂(r, u), then the step bounds' rows
   Eigen::VectorXd re_g;    ///< Re G(ω_j)
-  Eigen::VectorXd bounds;  ///< right-hand sides of the step bounds' rows (kMaxLogStep, kMaxBetaStep)
+  Eigen::VectorXd bounds;  ///< right-hand sides of the step bounds' rows (kMaxLogStep, kMaxBetaStep, PoleBox)
 };
 
-Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
+/// Lower and upper limits of each pole coordinate u (ln λ, ln α, β) for a search from `start`.
+struct PoleBox {
+  Eigen::VectorXd lo, hi;
+};
+
+PoleBox pole_box(const Order& order, const Eigen::VectorXd& start, const ResidueTarget& target) {
+  const Eigen::ArrayXd& w = target.omega;
+  double spacing = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 1; i < w.size(); ++i) spacing = std::min(spacing, std::abs(w[i] - w[i - 1]));
+  const double w_min = w.size() > 0 ? w.minCoeff() : 0.0, ceiling = kCeiling * (w.size() > 0 ? w.maxCoeff() : 0.0);
+  PoleBox b{Eigen::VectorXd(order.buffers()), Eigen::VectorXd(order.buffers())};
+  for (int k = 0; k < order.buffers(); ++k) {
+    const double x = start[pole_index(order, k)];
+    if (!is_rate(order, k)) {
+      b.lo[k] = -std::max(std::abs(x), ceiling), b.hi[k] = std::max(std::abs(x), ceiling);
+      continue;
+    }
+    const double floor = k < order.q() ? kLambdaFloor * w_min : (std::isfinite(spacing) ? spacing : 0.0);
+    b.lo[k] = std::log(std::min(x, floor)), b.hi[k] = std::log(std::max(x, ceiling));
+  }
+  return b;
+}
+
+/// u of θ (the coordinates of PoleBox).
+double coordinate(const Order& order, const Eigen::VectorXd& theta, int k) {
+  const double x = theta[pole_index(order, k)];
+  return is_rate(order, k) ? std::log(x) : x;
+}
+
+Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target,
+                        const PoleBox& box) {
   const int p = residue_count(order), m = order.buffers();
   Eigen::MatrixXd e;
   Eigen::VectorXd f;
@@ -90,13 +127,15 @@ Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const 
   l.c.topRows(g.rows()) << g, dg;
   l.re_g = g * r;
   l.bounds = Eigen::VectorXd::Zero(2 * m);
-  for (int k = 0; k < m; ++k) {  // −b_k ≤ δu_k ≤ b_k as two rows ±δu_k ≥ −b_k
+  for (int k = 0; k < m; ++k) {  // lo_k ≤ δu_k ≤ hi_k as the rows δu_k ≥ lo_k and −δu_k ≥ −hi_k
     const int s = (k - order.q()) / 2;
-    const double b = is_rate(order, k) ? kMaxLogStep
-                                       : kMaxBetaStep * std::hypot(theta[order.alpha(s)], theta[order.beta(s)]);
+    const double step = is_rate(order, k) ? kMaxLogStep
+                                          : kMaxBetaStep * std::hypot(theta[order.alpha(s)], theta[order.beta(s)]);
+    const double u = coordinate(order, theta, k);
     l.c(g.rows() + 2 * k, p + k) = 1.0;
     l.c(g.rows() + 2 * k + 1, p + k) = -1.0;
-    l.bounds[2 * k] = l.bounds[2 * k + 1] = -b;
+    l.bounds[2 * k] = std::max(-step, std::min(0.0, box.lo[k] - u));
+    l.bounds[2 * k + 1] = -std::min(step, std::max(0.0, box.hi[k] - u));
   }
   return l;
 }
@@ -146,7 +185,8 @@ PoleRefit refit_poles(const Order& order, const Eigen::VectorXd& start, const Re
   Eigen::VectorXd d2 = Eigen::VectorXd::Zero(p + m);
   double mu = -1.0, nu = 2.0;  // damping relative to D² (set at the first step), Nielsen's growth factor
   int small = 0;
-  Linearisation l = linearise(order, out.theta, target);
+  const PoleBox box = pole_box(order, start, target);
+  Linearisation l = linearise(order, out.theta, target, box);
   for (out.steps = 0; out.steps < max_steps;) {
     ++out.steps;
     d2 = d2.cwiseMax(l.j.colwise().squaredNorm().transpose());
@@ -173,7 +213,7 @@ PoleRefit refit_poles(const Order& order, const Eigen::VectorXd& start, const Re
       out.theta = trial.theta;
       out.sum_squares = trial.sum_squares;
       if (small >= 2) break;
-      l = linearise(order, out.theta, target);
+      l = linearise(order, out.theta, target, box);
     } else {
       mu *= nu;
       nu *= 2.0;

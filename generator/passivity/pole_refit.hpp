@@ -17,7 +17,9 @@
 ///
 /// J = ∂(model)/∂(r, u) (u = ln λ, ln α, β: rates stay positive), ε the residual, D² = diag JᵀJ (kept at its
 /// running maximum), and each pole's step bounded (a rate by a factor 10, β by 10× the pair's modulus, so
-/// every trial stays finite). Only the poles of the step are kept; the residues are r*(ψ + δψ), so every point visited
+/// every trial stays finite), within a box where the data inform the poles (λ ≥ ω_min/10, α ≥ the data's
+/// smallest frequency spacing, rates and |β| ≤ 10 ω_max; a start outside it keeps its value as the limit).
+/// Only the poles of the step are kept; the residues are r*(ψ + δψ), so every point visited
 /// is passive on Ω and F never increases. The caller certifies the result for every ω (the Hamiltonian test,
 /// in passive_residues).
 #pragma once
