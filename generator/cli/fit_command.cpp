@@ -171,9 +171,10 @@ int run_fit_command(const FitCommand& o) {
     fmt::print("passive estimate of {} (what emit uses): relative RMS residual {:.3g} % (best sample {:.3g} %), {}\n",
                chosen.order.name(), 100.0 * chosen.passive.relative_rms_residual,
                100.0 * chosen.passive.best_sample_relative_rms_residual,
-               !chosen.passive.certified ? "NOT certified passive"
-               : chosen.passive.changed  ? "residues refitted under Re G >= 0, certified passive"
-                                         : "the best sample itself, certified passive");
+               !chosen.passive.certified     ? "NOT certified passive"
+               : chosen.passive.poles_searched ? "poles and residues refitted under Re G >= 0, certified passive"
+               : chosen.passive.changed        ? "residues refitted under Re G >= 0, certified passive"
+                                               : "the best sample itself, certified passive");
   }
   return 0;
 }

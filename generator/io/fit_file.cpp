@@ -68,7 +68,7 @@ Json grid_json(const FitGrid& g) {
 }
 
 Json passive_json(const FitPassiveEstimate& e) {
-  return Json{{"poles_from", e.poles_from},
+  Json j{{"poles_from", e.poles_from},
               {"sample_rank", e.sample_rank},
               {"residues", e.residues},
               {"parameters", numbers_by_name_json(e.parameters)},
@@ -79,6 +79,10 @@ Json passive_json(const FitPassiveEstimate& e) {
               {"certified_passive", e.certified_passive},
               {"min_re_G", e.min_re_G},
               {"constraint_rounds", e.constraint_rounds}};
+  if (e.sampled_poles_relative_rms_residual) j["sampled_poles_relative_rms_residual"] = *e.sampled_poles_relative_rms_residual;
+  if (e.pole_search_steps) j["pole_search_steps"] = *e.pole_search_steps;
+  if (e.passivity_cost) j["passivity_cost"] = *e.passivity_cost;
+  return j;
 }
 
 Json model_json(const FitModel& m) {
@@ -215,6 +219,9 @@ FitPassiveEstimate read_passive(const Field& f) {
   e.certified_passive = o.required("certified_passive").boolean();
   e.min_re_G = o.required("min_re_G").number();
   e.constraint_rounds = o.required("constraint_rounds").integer();
+  if (auto v = o.optional("sampled_poles_relative_rms_residual")) e.sampled_poles_relative_rms_residual = v->number();
+  if (auto v = o.optional("pole_search_steps")) e.pole_search_steps = v->integer();
+  if (auto v = o.optional("passivity_cost")) e.passivity_cost = v->text();
   o.finish();
   return e;
 }

@@ -80,6 +80,12 @@ struct FitPassiveEstimate {
   bool certified_passive = false;
   double min_re_G = 0.0;
   std::int64_t constraint_rounds = 0;
+  /// Absent in older fits and when the poles were not searched (docs/passivity.md, "Searching the poles"):
+  /// the residual of the best candidate with sampled poles, and the search's Levenberg–Marquardt steps.
+  std::optional<double> sampled_poles_relative_rms_residual;
+  std::optional<std::int64_t> pole_search_steps;
+  /// Why passivity costs more than 1.25× the best sample's residual; absent when it costs less.
+  std::optional<std::string> passivity_cost;
 };
 
 struct FitGoodness {

@@ -63,4 +63,32 @@ ResidueBasis residue_basis(const Order& order, const Eigen::VectorXd& theta, con
   return b;
 }
 
+ResidueBasis pole_derivatives(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega) {
+  ADMITGEN_ENSURE(theta.size() == order.dim(), "{} needs {} parameters, got {}", order.name(), order.dim(),
+                  theta.size());
+  using cplx = std::complex<double>;
+  const cplx j(0.0, 1.0);
+  const Eigen::Index n = omega.size(), m = order.buffers();
+  ResidueBasis d{Eigen::MatrixXd::Zero(n, m), Eigen::MatrixXd::Zero(n, m)};
+  const auto put = [&](Eigen::Index i, Eigen::Index k, cplx v) { d.re(i, k) = v.real(), d.im(i, k) = v.imag(); };
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double w = omega[i];
+    if (std::isinf(w)) continue;  // every pole term and its derivatives vanish at infinite frequency
+    Eigen::Index k = 0;
+    for (int q = 0; q < order.q(); ++q, ++k) {
+      const cplx phi = 1.0 / cplx(theta[Order::lambda(q)], w);
+      put(i, k, -theta[Order::a(q)] * phi * phi);
+    }
+    for (int s = 0; s < order.s(); ++s, k += 2) {
+      const double al = theta[order.alpha(s)], be = theta[order.beta(s)];
+      const cplx res(theta[order.b(s)], theta[order.c(s)]);
+      const cplx plus = 1.0 / cplx(al, w + be), minus = 1.0 / cplx(al, w - be);
+      const cplx p2 = res * plus * plus, m2 = std::conj(res) * minus * minus;
+      put(i, k, -p2 - m2);
+      put(i, k + 1, -j * p2 + j * m2);
+    }
+  }
+  return d;
+}
+
 }  // namespace admitgen

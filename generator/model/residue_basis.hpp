@@ -40,4 +40,15 @@ void set_residues(const Order& order, const Eigen::VectorXd& r, Eigen::VectorXd&
 /// ω = +∞ is allowed and gives the row of G(j∞) = G∞.
 ResidueBasis residue_basis(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega);
 
+/// ∂G(jω)/∂ψ of the full model θ (its residues included) with respect to its poles
+/// ψ = (λ_1, …, λ_Q, α_1, β_1, …, α_S, β_S), at angular frequencies ω (rad/s, ≥ 0; +∞ gives a zero row):
+///
+///   ∂G/∂λ_q = −A_q φ_A,q²,
+///   ∂G/∂α_s = −(B_s + jC_s) p² − (B_s − jC_s) m²,   ∂G/∂β_s = −j(B_s + jC_s) p² + j(B_s − jC_s) m²,
+///
+/// with p = 1/(α_s + j(ω + β_s)), m = 1/(α_s + j(ω − β_s)) (the derivative of each 1/(x + jω) is −1/(x + jω)²).
+/// G = re + j im, each N × (Q + 2S), columns in the order of ψ. The Jacobian of the variable-projection refit
+/// of the passive estimate (docs/passivity.md, "Passive estimate").
+ResidueBasis pole_derivatives(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega);
+
 }  // namespace admitgen

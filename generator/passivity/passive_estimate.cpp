@@ -4,14 +4,103 @@
 #include "core/errors.hpp"
 #include "model/passivity.hpp"
 #include "passivity/passive_residues.hpp"
+#include "passivity/pole_refit.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace admitgen::passivity {
+namespace {
+
+/// A certified candidate beats an uncertified one; then the higher likelihood wins.
+bool better(const PassiveEstimate& a, const PassiveEstimate& b) {
+  return (a.certified && !b.certified) || (a.certified == b.certified && a.log_likelihood > b.log_likelihood);
+}
+
+/// The estimate from the poles of one sample (docs/passivity.md, "Passive estimate"): the sample itself
+/// when it is passive, else its residues refitted under Re G ≥ 0.
+PassiveEstimate from_sample(const Order& order, const Eigen::VectorXd& sample, int rank, const ResidueTarget& target,
+                            const Likelihood& likelihood) {
+  PassiveEstimate e;
+  e.candidate_rank = rank;
+  const PassivityResult as_is = continuous_passivity(order, sample.data());
+  if (as_is.passive) {
+    e.theta = sample;
+    e.certified = true;
+    e.min_re = as_is.min_re;
+  } else {
+    const PassiveResidues p = passive_residues(order, sample, target);
+    e.theta = p.theta;
+    e.certified = p.certified;
+    e.min_re = p.certificate.min_re;
+    e.rounds = p.rounds;
+    e.changed = true;
+  }
+  e.log_likelihood = likelihood(e.theta.data());
+  return e;
+}
+
+/// The pole search from one candidate (docs/passivity.md, "Searching the poles"), certified for every ω by
+/// the constraint generation of passive_residues at the poles found.
+PassiveEstimate searched(const Order& order, const PassiveEstimate& start, const ResidueTarget& target,
+                         const Likelihood& likelihood) {
+  const PoleRefit refit = refit_poles(order, start.theta, target, PassiveEstimate::kMaxSteps);
+  if (refit.accepted == 0) return start;  // the start's poles are a local optimum already
+  const PassiveResidues p = passive_residues(order, canonical_terms(order, refit.theta), target);
+  PassiveEstimate e = start;
+  e.theta = p.theta;
+  e.certified = p.certified;
+  e.min_re = p.certificate.min_re;
+  e.rounds = p.rounds;
+  e.changed = true;
+  e.poles_searched = true;
+  e.search_steps = refit.steps;
+  e.log_likelihood = likelihood(e.theta.data());
+  return e;
+}
+
+/// Where the best sample is not passive, in words: G∞ < 0, or the negative bands of Re G against the data
+/// band (docs/passivity.md, "What passivity costs").
+std::string violation(const Order& order, const Eigen::VectorXd& sample, const Measurement& data) {
+  const PassivityResult r = continuous_passivity(order, sample.data());
+  if (r.passive) return "the best sample is passive";
+  const double lo = data.f_hz.minCoeff(), hi = data.f_hz.maxCoeff();
+  bool in_band = false, below = false, above = false;
+  for (const auto& b : r.bands) {
+    in_band = in_band || (b.lo < hi && b.hi > lo);
+    below = below || b.lo < lo;
+    above = above || b.hi > hi;
+  }
+  std::string where = in_band ? "inside the data band" : "only outside the data band";
+  if (!in_band && below && above) where += " (below and above it)";
+  else if (!in_band && below) where += fmt::format(" (below {:.4g} Hz)", lo);
+  else if (!in_band && above) where += fmt::format(" (above {:.4g} Hz)", hi);
+  std::string text = fmt::format("the best sample has Re G < 0 {} (down to {:.3g})", where, r.min_re);
+  if (sample[Order::g_inf()] < 0.0)
+    text += fmt::format(", with G_inf = {:.3g} < 0, so Re G < 0 at high frequencies", sample[Order::g_inf()]);
+  return text;
+}
+
+std::string cost_reason(const Order& order, const Eigen::VectorXd& best_sample, const Measurement& data) {
+  const DataPassivity d = data_passivity(data);
+  const std::string data_text =
+      d.negative_points > 0
+          ? fmt::format("the data themselves are not passive at {} of {} points (Re y down to {:.3g})",
+                        d.negative_points, data.size(), d.min_re)
+          : fmt::format("the data are passive in band (min Re y = {:.3g}), so a better passive model may exist at "
+                        "another order or with poles far from the sampled ones",
+                        d.min_re);
+  return fmt::format("{}; no passive {} with poles near the best samples' fits better (pole search from {} starts); {}",
+                     violation(order, best_sample, data), order.name(), PassiveEstimate::kStarts, data_text);
+}
+
+}  // namespace
 
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
-                                 const std::vector<Eigen::VectorXd>& candidates, DataCount count) {
+                                 const std::vector<Eigen::VectorXd>& candidates, DataCount count, int starts) {
   ADMITGEN_ENSURE(!candidates.empty(), "passive estimate of {}: no samples", order.name());
   const Likelihood likelihood(data, order, count);
   const double data_norm2 = data.y.abs2().sum();
@@ -20,36 +109,27 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
   };
   // The likelihood weighs every point's complex residual equally: unit weights.
   const ResidueTarget target{data.omega(), data.y, Eigen::ArrayXd::Ones(data.size())};
-  PassiveEstimate best;
-  bool have = false;
+  std::vector<PassiveEstimate> tried;
   const int n = std::min<int>(PassiveEstimate::kCandidates, static_cast<int>(candidates.size()));
   for (int k = 0; k < n; ++k) {
-    const Eigen::VectorXd& sample = candidates[static_cast<std::size_t>(k)];
-    PassiveEstimate e;
-    e.candidate_rank = k;
-    const PassivityResult as_is = continuous_passivity(order, sample.data());
-    if (as_is.passive) {
-      e.theta = sample;
-      e.certified = true;
-      e.min_re = as_is.min_re;
-    } else {
-      const PassiveResidues p = passive_residues(order, sample, target);
-      e.theta = p.theta;
-      e.certified = p.certified;
-      e.min_re = p.certificate.min_re;
-      e.rounds = p.rounds;
-      e.changed = true;
+    tried.push_back(from_sample(order, candidates[static_cast<std::size_t>(k)], k, target, likelihood));
+    if (k == 0 && !tried.front().changed) break;  // the best sample itself is passive: nothing can beat it
+  }
+  std::stable_sort(tried.begin(), tried.end(), better);
+  PassiveEstimate best = tried.front();
+  best.sampled_poles_relative_rms_residual = rel_rms(best.theta);
+  if (best.changed && order.buffers() > 0 && starts > 0) {
+    for (int k = 0; k < std::min<int>(starts, static_cast<int>(tried.size())); ++k) {
+      const PassiveEstimate e = searched(order, tried[static_cast<std::size_t>(k)], target, likelihood);
+      if (better(e, best)) best = e;
     }
-    e.log_likelihood = likelihood(e.theta.data());
-    // A certified candidate beats an uncertified one; then the higher likelihood wins.
-    if (!have || (e.certified && !best.certified) ||
-        (e.certified == best.certified && e.log_likelihood > best.log_likelihood))
-      best = e, have = true;
-    if (k == 0 && as_is.passive) break;  // the best sample itself is passive: nothing can beat it
+    best.sampled_poles_relative_rms_residual = rel_rms(tried.front().theta);
   }
   best.best_sample_log_likelihood = likelihood(candidates.front().data());
   best.best_sample_relative_rms_residual = rel_rms(candidates.front());
   best.relative_rms_residual = rel_rms(best.theta);
+  if (best.relative_rms_residual > PassiveEstimate::kCostRatio * best.best_sample_relative_rms_residual)
+    best.cost_reason = cost_reason(order, candidates.front(), data);
   return best;
 }
 
@@ -58,6 +138,15 @@ DataPassivity data_passivity(const Measurement& data) {
   d.min_re = data.y.real().minCoeff();
   d.negative_points = static_cast<int>((data.y.real() < 0.0).count());
   return d;
+}
+
+std::string passivity_cost_warning(const Order& order, const PassiveEstimate& e) {
+  if (e.cost_reason.empty()) return {};
+  return fmt::format("passivity costs {:.4g} nats in the fit of {}: the passive estimate (what emit uses) fits at "
+                     "{:.3g} % relative RMS residual against the best sample's {:.3g} % ({:.2f}x): {}",
+                     e.best_sample_log_likelihood - e.log_likelihood, order.name(), 100.0 * e.relative_rms_residual,
+                     100.0 * e.best_sample_relative_rms_residual,
+                     e.relative_rms_residual / e.best_sample_relative_rms_residual, e.cost_reason);
 }
 
 }  // namespace admitgen::passivity

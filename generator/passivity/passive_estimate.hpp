@@ -3,10 +3,12 @@
 /// The passive estimate of a fitted order (docs/passivity.md, "Passive estimate"). For each of the
 /// highest-likelihood posterior samples (kCandidates of them), keep its poles and take the residues that
 /// fit the data best (the likelihood's own unweighted least squares) among those that make Re G(jω) ≥ 0
-/// at every ω (passivity/passive_residues.hpp); a sample that is already passive is kept as it is. The
-/// estimate is the candidate with the highest likelihood after this step.
-/// It is what `emit` uses by default: a filter that is passive by construction, at the smallest possible
-/// cost in fit for those poles.
+/// at every ω (passivity/passive_residues.hpp); a sample that is already passive is kept as it is. When the
+/// best sample is not passive, the poles are then searched too (passivity/pole_refit.hpp) from the
+/// kStarts best of these candidates, and each result is certified again. The estimate is the certified
+/// candidate with the highest likelihood.
+/// It is what `emit` uses by default: a filter that is passive by construction, at a cost in fit that is
+/// reported (docs/passivity.md, "What passivity costs").
 #pragma once
 
 #include "data/measurement.hpp"
@@ -24,9 +26,20 @@ struct PassiveEstimate {
   /// Candidates tried: poles of the best samples differ little, but where the best sample's residues
   /// violate passivity strongly a slightly worse sample can be much better once made passive.
   static constexpr int kCandidates = 16;
+  /// Starts of the pole search: the best candidates after the residue refit (docs/passivity.md, "Searching
+  /// the poles": the measured gain of more starts is below 1 % of the residual).
+  static constexpr int kStarts = 4;
+  /// Levenberg–Marquardt steps per start (converged runs of the bundled files take 10-40).
+  static constexpr int kMaxSteps = 60;
+  /// A passive estimate whose residual exceeds the best sample's by more than this factor is reported with
+  /// its cost (warning and fit.json's passivity_cost; docs/passivity.md, "What passivity costs").
+  static constexpr double kCostRatio = 1.25;
   static constexpr const char* kPolesFrom =
       "the best (after the passive residue refit) of the 16 highest-likelihood posterior samples";
-  int candidate_rank = 0;                    ///< 0 = the highest-likelihood sample
+  static constexpr const char* kPolesSearched =
+      "searched: least squares in poles and residues under Re G >= 0, from the 4 best of the 16 highest-likelihood "
+      "posterior samples after the passive residue refit";
+  int candidate_rank = 0;                    ///< 0 = the highest-likelihood sample (the start, when searched)
   Eigen::VectorXd theta;                     ///< packed as model/order.hpp
   double log_likelihood = 0.0;               ///< ln L of theta (inference/likelihood.hpp)
   double relative_rms_residual = 0.0;        ///< √(Σ|D − G|² / Σ|D|²) of theta
@@ -36,12 +49,21 @@ struct PassiveEstimate {
   double min_re = 0.0;                       ///< minimum of Re G found by the certificate's scan
   int rounds = 0;                            ///< constraint-generation rounds
   bool changed = false;                      ///< false when the best sample was already passive and kept
+  bool poles_searched = false;               ///< the poles were moved by the search (pole_refit.hpp)
+  int search_steps = 0;                      ///< Levenberg–Marquardt steps of the chosen start
+  /// Relative RMS residual of the best candidate with sampled poles (before the pole search).
+  double sampled_poles_relative_rms_residual = 0.0;
+  /// Why passivity costs more than kCostRatio in residual (empty otherwise): where the best sample is not
+  /// passive, and whether the data are.
+  std::string cost_reason;
 };
 
 /// `candidates`: samples of the order in descending likelihood (θ packed as model/order.hpp); the first
-/// kCandidates are tried. changed = false when the chosen one was passive as sampled.
+/// kCandidates are tried. changed = false when the chosen one was passive as sampled. `starts` of the pole
+/// search (0: the sampled poles only, as before the search existed; for measuring what it gains).
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
-                                 const std::vector<Eigen::VectorXd>& candidates, DataCount count);
+                                 const std::vector<Eigen::VectorXd>& candidates, DataCount count,
+                                 int starts = PassiveEstimate::kStarts);
 
 /// Share of data points with Re y < 0 (a passive wall has Re y ≥ 0) and the most negative Re y.
 struct DataPassivity {
@@ -49,5 +71,9 @@ struct DataPassivity {
   double min_re = 0.0;
 };
 DataPassivity data_passivity(const Measurement& data);
+
+/// One line for the terminal and fit.json's warnings when the estimate costs more than kCostRatio: the cost
+/// in nats and in RMS residual, and cost_reason. Empty when it costs less.
+std::string passivity_cost_warning(const Order& order, const PassiveEstimate& e);
 
 }  // namespace admitgen::passivity

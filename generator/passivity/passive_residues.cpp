@@ -26,7 +26,20 @@ constexpr double kMarginFractions[] = {1e-9, 1e-6, 1e-4};
 constexpr int kPointsPerDecade = 16;
 constexpr int kMaxRounds = 30;
 
-/// Weighted least-squares system [w Re Φ; w Im Φ] r ≈ [w Re t; w Im t].
+/// Violations to add: each negative band's minimum and 9 points spanning it (geometric when it starts
+/// above 0 Hz), so one round covers the whole band (rad/s).
+void add_violations(const PassivityResult& r, std::vector<double>& omega) {
+  const auto rad = [](double hz) { return 2.0 * kPi * hz; };
+  for (const auto& b : r.bands) {
+    if (std::isfinite(b.at)) omega.push_back(rad(b.at));
+    const double hi = std::isfinite(b.hi) ? b.hi : 2.0 * std::max(b.lo, b.at);
+    for (int i = 0; i <= 8; ++i)
+      omega.push_back(rad(b.lo > 0.0 ? b.lo * std::pow(hi / b.lo, i / 8.0) : hi * i / 8.0));
+  }
+}
+
+}  // namespace
+
 void weighted_system(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t, Eigen::MatrixXd& e,
                      Eigen::VectorXd& f) {
   const ResidueBasis b = residue_basis(order, theta, t.omega);
@@ -39,9 +52,7 @@ void weighted_system(const Order& order, const Eigen::VectorXd& theta, const Res
   f.tail(n) = (t.weights * t.values.imag()).matrix();
 }
 
-/// Initial Ω: ω = 0, ω = ∞, the pole frequencies β_s and a log grid spanning poles and target (the
-/// certificate adds whatever this misses).
-std::vector<double> initial_constraints(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t) {
+std::vector<double> constraint_grid(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   std::vector<double> w{0.0, std::numeric_limits<double>::infinity()};
   for (int q = 0; q < order.q(); ++q) lo = std::min(lo, theta[Order::lambda(q)]), hi = std::max(hi, theta[Order::lambda(q)]);
@@ -58,22 +69,14 @@ std::vector<double> initial_constraints(const Order& order, const Eigen::VectorX
     const int n = static_cast<int>(std::ceil(kPointsPerDecade * std::log10(hi / lo)));
     for (int i = 0; i <= n; ++i) w.push_back(lo * std::pow(hi / lo, double(i) / n));
   }
+  std::sort(w.begin(), w.end());
+  w.erase(std::unique(w.begin(), w.end()), w.end());
   return w;
 }
 
-/// Violations to add: each negative band's minimum and 9 points spanning it (geometric when it starts
-/// above 0 Hz), so one round covers the whole band (rad/s).
-void add_violations(const PassivityResult& r, std::vector<double>& omega) {
-  const auto rad = [](double hz) { return 2.0 * kPi * hz; };
-  for (const auto& b : r.bands) {
-    if (std::isfinite(b.at)) omega.push_back(rad(b.at));
-    const double hi = std::isfinite(b.hi) ? b.hi : 2.0 * std::max(b.lo, b.at);
-    for (int i = 0; i <= 8; ++i)
-      omega.push_back(rad(b.lo > 0.0 ? b.lo * std::pow(hi / b.lo, i / 8.0) : hi * i / 8.0));
-  }
+double constraint_margin(const ResidueTarget& target, double fraction) {
+  return fraction * std::max(target.values.abs().maxCoeff(), 1e-300);
 }
-
-}  // namespace
 
 PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target) {
   ADMITGEN_ENSURE(target.omega.size() == target.values.size() && target.omega.size() == target.weights.size(),
@@ -81,11 +84,11 @@ PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& thet
   Eigen::MatrixXd e;
   Eigen::VectorXd f;
   weighted_system(order, theta, target, e, f);
-  std::vector<double> omega = initial_constraints(order, theta, target);
+  std::vector<double> omega = constraint_grid(order, theta, target);
   PassiveResidues out;
   out.theta = theta;
   for (const double fraction : kMarginFractions) {
-    const double margin = fraction * std::max(target.values.abs().maxCoeff(), 1e-300);
+    const double margin = constraint_margin(target, fraction);
     for (out.rounds = 1; out.rounds <= kMaxRounds; ++out.rounds) {
       std::sort(omega.begin(), omega.end());
       omega.erase(std::unique(omega.begin(), omega.end()), omega.end());
@@ -93,8 +96,12 @@ PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& thet
       const Eigen::MatrixXd g = residue_basis(order, theta, w).re;  // Re G(jω_j) = g_j · r
       // Solved with 2δ: the slack absorbs the dips of Re G between constraint points (each would cost a round).
       const auto sol = numerics::least_squares_inequality(e, f, g, Eigen::VectorXd::Constant(g.rows(), 2.0 * margin));
-      ADMITGEN_ENSURE(sol.feasible, "passive residues: constraints Re G >= margin are infeasible (cannot happen: "
-                                    "r = (margin, 0, ...) satisfies them)");
+      // r = (2δ, 0, …) is feasible in exact arithmetic; a solve that says otherwise (or overflows) met a basis
+      // too ill-conditioned for it (nearly coincident poles): reported as not certified, never hidden.
+      if (!sol.feasible || !sol.x.allFinite()) {
+        out.solve_failed = true;
+        return out;
+      }
       set_residues(order, sol.x, out.theta);
       out.constraints = static_cast<int>(omega.size());
       out.certificate = continuous_passivity(order, out.theta.data());

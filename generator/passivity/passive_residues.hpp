@@ -21,6 +21,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace admitgen::passivity {
 
 /// What the residues are fitted to: complex values t at angular frequencies ω (rad/s), weights w ≥ 0.
@@ -37,11 +39,27 @@ struct PassiveResidues {
   int rounds = 0;                      ///< constraint-generation rounds (1 = the first grid sufficed)
   int constraints = 0;                 ///< size of the final constraint set Ω
   double margin_fraction = 0.0;        ///< δ / max|t| of the certified solution (1e-9 unless it needed more)
+  /// The constraint solve failed numerically (a basis too ill-conditioned for it: nearly coincident poles);
+  /// theta then holds the residues of the last successful round, or the input's. Not certified.
+  bool solve_failed = false;
 };
 
+/// The margin δ = fraction · max|t| of the constraints Re G ≥ δ (fraction 1e-9 first, see the file comment).
+double constraint_margin(const ResidueTarget& target, double fraction);
+
+/// The first constraint set Ω (rad/s, ascending, distinct): ω = 0, ω = ∞, 31 points across each pair's
+/// resonance (model/passivity.hpp, resonance_points) and a log grid of 16 points per decade from 1e-3 × the
+/// slowest pole or target frequency to 1e3 × the fastest (Re G of a pole term varies on the scale of its own
+/// rate). The certificate adds whatever this misses.
+std::vector<double> constraint_grid(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
+
+/// The weighted least-squares system of the residues, [w Re Φ; w Im Φ] r ≈ [w Re t; w Im t] (2N rows).
+void weighted_system(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target, Eigen::MatrixXd& e,
+                     Eigen::VectorXd& f);
+
 /// Residues of `theta`'s poles (its residues are ignored) closest to `target` subject to passivity.
-/// Requires every λ, α > 0. Not certified only if the rounds of every margin are exhausted (reported, never
-/// hidden).
+/// Requires every λ, α > 0. Not certified only if the rounds of every margin are exhausted or the solve fails
+/// (solve_failed; reported, never hidden).
 PassiveResidues passive_residues(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
 
 }  // namespace admitgen::passivity

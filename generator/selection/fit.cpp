@@ -449,9 +449,19 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   fit.models = std::move(results);
   fit.warnings = missed_mode_warnings(fit.models, missed_modes(data, settings, fit.models));
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
-  for (auto& m : fit.models)
+  // One task per order, each writing its own slot: the same bits at any thread count (docs/method.md, "Determinism").
+  std::vector<std::size_t> orders(fit.models.size());
+  std::iota(orders.begin(), orders.end(), std::size_t{0});
+  std::stable_sort(orders.begin(), orders.end(),
+                   [&](auto a, auto b) { return fit.models[a].order.dim() > fit.models[b].order.dim(); });
+  run_in_parallel(orders, settings.threads, [&](std::size_t i) {
+    auto& m = fit.models[i];
     m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
                                             settings.data_count);
+  });
+  if (const auto w = passivity::passivity_cost_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
+      !w.empty())
+    fit.warnings.push_back(w);
   if (const auto d = passivity::data_passivity(data); d.negative_points > 0)
     fit.warnings.push_back(fmt::format(
         "the data are not passive at {} of {} points (Re y down to {:.3g}; a wall cannot return more energy than it "

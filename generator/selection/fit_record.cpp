@@ -74,7 +74,7 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
 FitPassiveEstimate passive_record(const ModelResult& m) {
   const auto& e = m.passive;
   FitPassiveEstimate r;
-  r.poles_from = passivity::PassiveEstimate::kPolesFrom;
+  r.poles_from = e.poles_searched ? passivity::PassiveEstimate::kPolesSearched : passivity::PassiveEstimate::kPolesFrom;
   r.sample_rank = e.candidate_rank;
   r.residues = e.changed ? "refitted: least squares to the data subject to Re G >= 0 at every frequency"
                          : "those of the sample (already passive)";
@@ -87,6 +87,11 @@ FitPassiveEstimate passive_record(const ModelResult& m) {
   r.certified_passive = e.certified;
   r.min_re_G = e.min_re;
   r.constraint_rounds = e.rounds;
+  if (e.poles_searched) {
+    r.sampled_poles_relative_rms_residual = e.sampled_poles_relative_rms_residual;
+    r.pole_search_steps = e.search_steps;
+  }
+  if (!e.cost_reason.empty()) r.passivity_cost = e.cost_reason;
   return r;
 }
 
