@@ -124,7 +124,6 @@ ResidueEvidence::ResidueEvidence(const Measurement& data, const Order& order, Da
       k_(real_data_count(count, data.size())),
       p_(residue_count(order)),
       scale_(admittance_scale),
-      gram_work_(residue_gram_work_size(residue_count(order))),
       m_(residue_count(order), residue_count(order)),
       g_(residue_count(order)),
       eigen_(residue_count(order)) {
@@ -141,7 +140,7 @@ const ResiduePosterior& ResidueEvidence::posterior(const double* poles) const {
     if (!(poles[q] > 0.0)) return c;
   for (int s = 0; s < order_.s(); ++s)
     if (!(poles[order_.q() + 2 * s] > 0.0)) return c;
-  residue_gram(points_, order_.q(), order_.s(), poles, gram_work_.data(), m_.data(), g_.data());
+  residue_gram(points_, order_.q(), order_.s(), poles, m_.data(), g_.data());
   gaussian_residue_scales(order_, poles, scale_, c.sd.data());
   // M̃ = D M D and D g: the data's Gram matrix in units of the prior (docs/method.md).
   m_ = c.sd.asDiagonal() * m_ * c.sd.asDiagonal();

@@ -71,7 +71,6 @@ class ResidueEvidence {
   double b_norm2_;
   int k_, p_;
   double scale_;
-  mutable std::vector<double> gram_work_;
   mutable Eigen::MatrixXd m_;
   mutable Eigen::VectorXd g_;
   mutable Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_;

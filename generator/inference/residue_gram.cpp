@@ -20,21 +20,14 @@ namespace {
 
 using Complex = std::complex<double>;
 
-/// Most distinct poles: every residue but G∞'s.
-constexpr int kMaxPoles = kMaxGramResidues - 1;
+/// The sums of the pass, index 0 for z_0 = 1 (T_0 = N is set by the caller, h_0 = Σ D), 1 … Q + 2S for the poles.
+using PoleSums = std::array<Complex, kMaxGramResidues>;
 
-/// Per-lane partial sums of the pass: T_a = Σ z_a and h_a = Σ conj(z_a) b for each pole a, and Σ b.
-struct PoleSums {
-  double* t_re;
-  double* t_im;
-  double* h_re;
-  double* h_im;
-  double* b_sum;  ///< re then im, L lanes each
-};
-
-PoleSums pole_sums(double* work, int poles) {
-  const int L = kGramLanes;
-  return {work, work + poles * L, work + 2 * poles * L, work + 3 * poles * L, work + 4 * poles * L};
+/// Sum of the lanes in a fixed order.
+double lane_sum(const double* x) {
+  double t = 0.0;
+  for (int l = 0; l < kGramLanes; ++l) t += x[l];
+  return t;
 }
 
 /// Adds one pole's z_a = 1/(P_a + jω) over every point into the lane sums of T_a and h_a (the lanes are
@@ -48,23 +41,18 @@ struct LaneSums {
     h_re[l] += zr * b_re + zi * b_im;
     h_im[l] += zr * b_im - zi * b_re;
   }
-  void store(const PoleSums& sums, int a) const {
-    for (int l = 0; l < kGramLanes; ++l) {
-      sums.t_re[a * kGramLanes + l] = t_re[l];
-      sums.t_im[a * kGramLanes + l] = t_im[l];
-      sums.h_re[a * kGramLanes + l] = h_re[l];
-      sums.h_im[a * kGramLanes + l] = h_im[l];
-    }
+  void store(PoleSums& t, PoleSums& h, int a) const {
+    t[static_cast<std::size_t>(a)] = Complex(lane_sum(t_re), lane_sum(t_im));
+    h[static_cast<std::size_t>(a)] = Complex(lane_sum(h_re), lane_sum(h_im));
   }
 };
 
 /// The pass over the points, pole by pole: z_a(ω) = 1/(P_a + jω) for every pole (one division per real
-/// pole, one per pair, as model/multipole.hpp) and the sums of PoleSums, each lane summing the points
-/// i ≡ l mod kGramLanes. Padding points carry weight 0 (GramPoints::mask) and zero data.
+/// pole, one per pair, as model/multipole.hpp) summed into T_a and h_a (a = 1 … Q + 2S) and Σ D into h_0, each
+/// lane summing the points i ≡ l mod kGramLanes. Padding points carry weight 0 (GramPoints::mask) and zero data.
 ADMITGEN_GRAM_CLONES
-void sum_over_points(const GramPoints& points, int q, int s, const double* poles, double* work) {
+void sum_over_points(const GramPoints& points, int q, int s, const double* poles, PoleSums& t, PoleSums& h) {
   constexpr int L = kGramLanes;
-  const PoleSums sums = pole_sums(work, q + 2 * s);
   const Eigen::Index padded = points.padded();
   const double* w = points.omega();
   const double* w2 = points.omega2();
@@ -82,7 +70,7 @@ void sum_over_points(const GramPoints& points, int q, int s, const double* poles
         const double inv = mask[i] / (lam2 + w2[i]);
         acc.add(l, lam * inv, -w[i] * inv, b_re[i], b_im[i]);
       }
-    acc.store(sums, j);
+    acc.store(t, h, 1 + j);
   }
   for (int j = 0; j < s; ++j) {
     const double al = poles[q + 2 * j], be = poles[q + 2 * j + 1], al2 = al * al;
@@ -97,8 +85,8 @@ void sum_over_points(const GramPoints& points, int q, int s, const double* poles
         plus.add(l, al * dp, -wp * dp, b_re[i], b_im[i]);
         minus.add(l, al * dm, -wm * dm, b_re[i], b_im[i]);
       }
-    plus.store(sums, q + 2 * j);
-    minus.store(sums, q + 2 * j + 1);
+    plus.store(t, h, 1 + q + 2 * j);
+    minus.store(t, h, 2 + q + 2 * j);
   }
   alignas(64) double b_sum_re[L] = {}, b_sum_im[L] = {};
   for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
@@ -106,13 +94,7 @@ void sum_over_points(const GramPoints& points, int q, int s, const double* poles
       b_sum_re[l] += b_re[i0 + l];
       b_sum_im[l] += b_im[i0 + l];
     }
-  for (int l = 0; l < L; ++l) sums.b_sum[l] = b_sum_re[l], sums.b_sum[L + l] = b_sum_im[l];
-}
-
-double lane_sum(const double* x) {
-  double t = 0.0;
-  for (int l = 0; l < kGramLanes; ++l) t += x[l];  // lanes combined in a fixed order
-  return t;
+  h[0] = Complex(lane_sum(b_sum_re), lane_sum(b_sum_im));
 }
 
 /// How residue u enters the pole functions: G = Σ_u r_u Σ_(a, κ) κ z_a (z_0 = 1 for G∞). B_s puts 1 on
@@ -146,29 +128,18 @@ GramPoints::GramPoints(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& data)
   }
 }
 
-std::size_t residue_gram_work_size(int p) {
-  return static_cast<std::size_t>(4 * (p - 1) + 2) * kGramLanes;
-}
-
-void residue_gram(const GramPoints& points, int q, int s, const double* poles, double* work, double* m, double* g) {
-  const int p = 1 + q + 2 * s, poles_count = q + 2 * s;
+void residue_gram(const GramPoints& points, int q, int s, const double* poles, double* m, double* g) {
+  const int p = 1 + q + 2 * s;
   ADMITGEN_ENSURE(p <= kMaxGramResidues, "{} residues", p);
-  sum_over_points(points, q, s, poles, work);
-  const PoleSums sums = pole_sums(work, poles_count);
   // Pole functions z_0 = 1, z_a = 1/(P_a + jω): P of each, T_a = Σ z_a, h_a = Σ conj(z_a) b.
-  std::array<Complex, kMaxGramResidues> pole{}, t{}, h{};
+  PoleSums pole{}, t{}, h{};
+  sum_over_points(points, q, s, poles, t, h);
   t[0] = Complex(static_cast<double>(points.size()), 0.0);
-  h[0] = Complex(lane_sum(sums.b_sum), lane_sum(sums.b_sum + kGramLanes));
   for (int j = 0; j < q; ++j) pole[static_cast<std::size_t>(1 + j)] = Complex(poles[j], 0.0);
   for (int j = 0; j < s; ++j) {
     const double al = poles[q + 2 * j], be = poles[q + 2 * j + 1];
     pole[static_cast<std::size_t>(1 + q + 2 * j)] = Complex(al, be);
     pole[static_cast<std::size_t>(2 + q + 2 * j)] = Complex(al, -be);
-  }
-  for (int a = 0; a < poles_count; ++a) {
-    const std::size_t k = static_cast<std::size_t>(1 + a);
-    t[k] = Complex(lane_sum(sums.t_re + a * kGramLanes), lane_sum(sums.t_im + a * kGramLanes));
-    h[k] = Complex(lane_sum(sums.h_re + a * kGramLanes), lane_sum(sums.h_im + a * kGramLanes));
   }
   // H_ab = Σ conj(z_a) z_b. By partial fractions (docs/method.md, "Residues given the poles"):
   //   conj(z_a) z_b = 1/((P̄_a − jω)(P_b + jω)) = [1/(P̄_a − jω) + 1/(P_b + jω)]/(P̄_a + P_b),

@@ -43,13 +43,9 @@ class GramPoints {
   std::vector<double> omega_, omega2_, mask_, b_re_, b_im_;
 };
 
-/// Work space of residue_gram for p residues (one per thread; the pass allocates nothing).
-std::size_t residue_gram_work_size(int p);
-
 /// M (p × p, column-major, both triangles) and g (p) for Q real poles and S pairs at ψ
-/// (inference/pole_space.hpp packing), p = 1 + Q + 2S ≤ kMaxGramResidues. `work` holds
-/// residue_gram_work_size(p) doubles.
-void residue_gram(const GramPoints& points, int q, int s, const double* poles, double* work, double* m, double* g);
+/// (inference/pole_space.hpp packing), p = 1 + Q + 2S ≤ kMaxGramResidues. Allocates nothing.
+void residue_gram(const GramPoints& points, int q, int s, const double* poles, double* m, double* g);
 
 /// The instruction set residue_gram runs with on this CPU: "avx512f", "avx2" or "x86-64 baseline"
 /// ("portable" off x86-64).

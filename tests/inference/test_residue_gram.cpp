@@ -49,8 +49,8 @@ void compare(const Order& order, const std::vector<double>& poles, const Eigen::
   const Reference ref = direct(order, poles, omega, data);
   const int p = residue_count(order);
   const GramPoints points(omega, data);
-  std::vector<double> work(residue_gram_work_size(p)), m(static_cast<std::size_t>(p * p)), g(static_cast<std::size_t>(p));
-  residue_gram(points, order.q(), order.s(), poles.data(), work.data(), m.data(), g.data());
+  std::vector<double> m(static_cast<std::size_t>(p * p)), g(static_cast<std::size_t>(p));
+  residue_gram(points, order.q(), order.s(), poles.data(), m.data(), g.data());
   const double data_norm = std::sqrt(data.abs2().sum());
   for (int u = 0; u < p; ++u) {
     for (int v = 0; v < p; ++v) {
