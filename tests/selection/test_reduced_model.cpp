@@ -36,6 +36,19 @@ Eigen::VectorXd larger() {
   return t;
 }
 
+// A run of one sample θ (one live point, its own best), as a sampler of the given name would record it.
+ModelResult one_point(const Measurement& data, const FitSettings& settings, const Order& order,
+                      const Eigen::VectorXd& theta, const char* sampler) {
+  ModelResult m{order, {}, 1, 0.0, {}, {}};
+  m.sampler = sampler;
+  m.run.dim = order.dim();
+  m.run.samples.assign(theta.data(), theta.data() + theta.size());
+  m.run.log_likelihood = {Likelihood(data, order, settings.data_count)(theta.data())};
+  m.run.log_weight = {0.0};
+  m.run.max_log_likelihood = m.run.log_likelihood[0];
+  return m;
+}
+
 struct LeastSquares {
   Eigen::VectorXd theta;  // Q1S1 packing
   double log_l;
@@ -124,13 +137,7 @@ TEST_CASE("missed modes: a smaller order below what the larger order's best show
   const Measurement data = test::synthetic(Order(1, 1), truth(), 150, 100.0, 4000.0, 0.01, 20261127);
   FitSettings settings;
   const auto one_point_run = [&](const Order& order, const Eigen::VectorXd& theta) {
-    ModelResult m{order, {}, 0, 0.0, {}, {}};
-    m.run.dim = order.dim();
-    m.run.samples.assign(theta.data(), theta.data() + theta.size());
-    m.run.log_likelihood = {Likelihood(data, order, settings.data_count)(theta.data())};
-    m.run.log_weight = {0.0};
-    m.run.max_log_likelihood = m.run.log_likelihood[0];
-    return m;
+    return one_point(data, settings, order, theta, "full");
   };
   // The Q1S1 run stuck in a poor mode (its real pole at 2000 s⁻¹, residues refitted: its own best).
   Eigen::VectorXd poor = least_squares(data, 2000.0, 1500.0, 10000.0, nullptr).theta;
@@ -168,14 +175,7 @@ TEST_CASE("missed modes of the pole sampler: compared on the marginal of the pol
   const ResidueEvidence q1s1(data, Order(1, 1), settings.data_count, settings.priors.admittance_scale);
   const ResidueEvidence q2s1(data, Order(2, 1), settings.data_count, settings.priors.admittance_scale);
   const auto one_point_run = [&](const Order& order, const Eigen::VectorXd& theta) {
-    ModelResult m{order, {}, 1, 0.0, {}, {}};
-    m.sampler = kPoleSamplerName;
-    m.run.dim = order.dim();
-    m.run.samples.assign(theta.data(), theta.data() + theta.size());
-    m.run.log_likelihood = {Likelihood(data, order, settings.data_count)(theta.data())};
-    m.run.log_weight = {0.0};
-    m.run.max_log_likelihood = m.run.log_likelihood[0];
-    return m;
+    return one_point(data, settings, order, theta, kPoleSamplerName);
   };
   Eigen::VectorXd poor = truth();
   poor[2] = 2000.0;  // Q1S1 stuck with its real pole at 2000 s⁻¹
