@@ -54,4 +54,11 @@ SeedScatter seed_scatter(const std::vector<double>& log_z, const std::vector<dou
   return s;
 }
 
+Eigen::MatrixXd random_matrix(Rng& rng, Eigen::Index r, Eigen::Index c) {
+  Eigen::MatrixXd m(r, c);
+  for (Eigen::Index i = 0; i < r; ++i)
+    for (Eigen::Index j = 0; j < c; ++j) m(i, j) = 2.0 * rng.uniform() - 1.0;
+  return m;
+}
+
 }  // namespace admitgen::test

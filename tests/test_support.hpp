@@ -4,6 +4,10 @@
 /// child process with captured output, and scratch directories.
 #pragma once
 
+#include "core/rng.hpp"
+
+#include <Eigen/Core>
+
 #include <string>
 #include <vector>
 
@@ -33,5 +37,8 @@ struct SeedScatter {
   double mean = 0.0, spread = 0.0, reported = 0.0;
 };
 SeedScatter seed_scatter(const std::vector<double>& log_z, const std::vector<double>& log_z_error);
+
+/// An r × c matrix of independent uniform draws in [−1, 1).
+Eigen::MatrixXd random_matrix(Rng& rng, Eigen::Index r, Eigen::Index c);
 
 }  // namespace admitgen::test

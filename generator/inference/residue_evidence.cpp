@@ -126,30 +126,51 @@ ResidueEvidence::ResidueEvidence(const Measurement& data, const Order& order, Da
       scale_(admittance_scale),
       m_(residue_count(order), residue_count(order)),
       g_(residue_count(order)),
+      y_(residue_count(order)),
       eigen_(residue_count(order)) {
   ADMITGEN_ENSURE(k_ > 0 && p_ <= kMaxGramResidues, "K = {} real data for {} residues", k_, p_);
   c_.k = k_;
   c_.sd.resize(p_);
 }
 
+double ResidueEvidence::operator()(const double* poles) const {
+  ResiduePosterior& c = c_;
+  if (!gram(poles)) return c.log_evidence;
+  // μ and h without the eigenvectors, which only draws need (numerics/eigen_projection.hpp).
+  y_ = c.sd.asDiagonal() * g_;
+  if (!projection_.compute(m_, y_)) return c.log_evidence;
+  c.mu = projection_.eigenvalues();
+  c.h = projection_.projections();
+  return integrate(c).log_evidence;
+}
+
 const ResiduePosterior& ResidueEvidence::posterior(const double* poles) const {
   ResiduePosterior& c = c_;
-  c.valid = false;
-  c.log_evidence = -kInf;
-  for (int q = 0; q < order_.q(); ++q)
-    if (!(poles[q] > 0.0)) return c;
-  for (int s = 0; s < order_.s(); ++s)
-    if (!(poles[order_.q() + 2 * s] > 0.0)) return c;
-  residue_gram(points_, order_.q(), order_.s(), poles, m_.data(), g_.data());
-  gaussian_residue_scales(order_, poles, scale_, c.sd.data());
-  // M̃ = D M D and D g: the data's Gram matrix in units of the prior (docs/method.md).
-  m_ = c.sd.asDiagonal() * m_ * c.sd.asDiagonal();
-  if (!m_.allFinite()) return c;
+  if (!gram(poles)) return c;
   eigen_.compute(m_, Eigen::ComputeEigenvectors);
   if (eigen_.info() != Eigen::Success) return c;
   c.mu = eigen_.eigenvalues();
   c.v = eigen_.eigenvectors();
   c.h = c.v.transpose() * (c.sd.asDiagonal() * g_);
+  return integrate(c);
+}
+
+bool ResidueEvidence::gram(const double* poles) const {
+  ResiduePosterior& c = c_;
+  c.valid = false;
+  c.log_evidence = -kInf;
+  for (int q = 0; q < order_.q(); ++q)
+    if (!(poles[q] > 0.0)) return false;
+  for (int s = 0; s < order_.s(); ++s)
+    if (!(poles[order_.q() + 2 * s] > 0.0)) return false;
+  residue_gram(points_, order_.q(), order_.s(), poles, m_.data(), g_.data());
+  gaussian_residue_scales(order_, poles, scale_, c.sd.data());
+  // M̃ = D M D and D g: the data's Gram matrix in units of the prior (docs/method.md).
+  m_ = c.sd.asDiagonal() * m_ * c.sd.asDiagonal();
+  return m_.allFinite();
+}
+
+const ResiduePosterior& ResidueEvidence::integrate(ResiduePosterior& c) const {
   const double mu_max = c.mu.maxCoeff();
   c.c2.resize(p_);
   double explained = 0.0;

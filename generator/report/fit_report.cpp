@@ -196,8 +196,8 @@ std::string provenance(const FitRecord& fit) {
       {"layout", escape_xml(in.read_as.value_or("—"))},
       {"orders", !fit.grid || fit.grid->steps.empty()
                      ? fmt::format("Q0–{} × S0–{}", s.qmax, s.smax)
-                     : fmt::format("Q0–{} × S0–{} (grown from Q0–{} × S0–{}: {})", fit.grid->qmax, fit.grid->smax,
-                                   s.qmax, s.smax, escape_xml(fmt::format("{}", fmt::join(fit.grid->steps, "; "))))},
+                     : fmt::format("Q0–{} × S0–{}, grown around the selection: {}", s.qmax, s.smax,
+                                   escape_xml(fmt::format("{}", fmt::join(fit.grid->steps, "; "))))},
       {"sampler", fmt::format("{}; {} live points, seed {}, Δln Z {} , slices {}", escape_xml(s.sampler.method), s.live,
                               s.seed, escape_xml(json_number(s.sampler.dlogz)),
                               s.sampler.slices ? std::to_string(*s.sampler.slices) : std::string("3 + dim"))},

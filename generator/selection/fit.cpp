@@ -373,22 +373,26 @@ std::size_t select_order(const FitSettings& settings, const std::vector<ModelRes
   return settings.rule.select(log_z, error, buffers);
 }
 
-/// Grows the grid while the selected order lies on its edge (selection/grid_growth.hpp): runs the added orders
-/// (and the re-runs they call for) and keeps `grid`, `results` and `rounds` in the grown grid's order.
+/// Grows the fitted orders while the selected one lies on their edge (selection/grid_growth.hpp): runs the added
+/// orders (and the re-runs they call for) and keeps `grid`, `results` and `rounds` in Q-major order.
 GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::vector<Order>& grid,
-                     std::vector<ModelResult>& results, std::vector<int>& rounds, double first_round_calls,
+                     std::vector<ModelResult>& results, std::vector<int>& rounds, double first_round_passes,
                      Progress& progress) {
   GridGrowth growth{settings.qmax, settings.smax, {}, {}};
   const int k = real_data_count(settings.data_count, data.size());
+  const double budget = std::max(first_round_passes, kMinGrowthBudgetPasses);
   double spent = 0.0;
   for (;;) {
-    const auto step = next_grid_step(results, select_order(settings, results), growth.qmax, growth.smax, settings, k,
-                                     spent, std::max(first_round_calls, kMinGrowthBudgetCalls), growth.edge);
+    const auto step = next_grid_step(results, select_order(settings, results), settings, k,
+                                     static_cast<long>(data.size()), spent, budget, growth.edge);
     if (!step) return growth;
     progress.message(step->reason);
     growth.steps.push_back(step->reason);
-    spent += step->calls;
-    std::vector<Order> grown = order_grid(step->qmax, step->smax);
+    spent += step->passes;
+    std::vector<Order> grown = grid;
+    grown.insert(grown.end(), step->add.begin(), step->add.end());
+    std::stable_sort(grown.begin(), grown.end(),
+                     [](const Order& a, const Order& b) { return a.q() != b.q() ? a.q() < b.q() : a.s() < b.s(); });
     std::vector<ModelResult> merged(grown.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
     std::vector<int> merged_rounds(grown.size(), 0);
     std::vector<std::size_t> added;
@@ -406,8 +410,10 @@ GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::
     grid = std::move(grown);
     results = std::move(merged);
     rounds = std::move(merged_rounds);
-    growth.qmax = step->qmax;
-    growth.smax = step->smax;
+    for (const Order& o : step->add) {
+      growth.qmax = std::max(growth.qmax, o.q());
+      growth.smax = std::max(growth.smax, o.s());
+    }
     rerun_missed_modes(data, settings, grid, results, rounds, progress);
   }
 }
@@ -438,13 +444,14 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
     throw std::logic_error("complete_fit: one first-round result per order of the grid expected");
   for (std::size_t i = 0; i < grid.size(); ++i)
     if (results[i].order != grid[i]) throw std::logic_error("complete_fit: results not in grid order");
-  double first_round_calls = 0.0;
-  for (const auto& m : results) first_round_calls += static_cast<double>(m.run.calls);
+  double first_round_passes = 0.0;
+  for (const auto& m : results)
+    first_round_passes += pole_passes(m.order, static_cast<double>(m.run.calls), static_cast<long>(data.size()));
   std::vector<int> rounds(grid.size(), 0);
   rerun_missed_modes(data, settings, grid, results, rounds, progress);
 
   FitResult fit;
-  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_calls, progress);
+  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_passes, progress);
   fit.selected = select_order(settings, results);
   fit.models = std::move(results);
   fit.warnings = missed_mode_warnings(fit.models, missed_modes(data, settings, fit.models));

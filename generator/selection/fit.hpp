@@ -93,16 +93,16 @@ struct PredictiveBand {
   int draws = 0;
 };
 
-/// How the grid grew beyond Q0-qmax × S0-smax (selection/grid_growth.hpp).
+/// How the fitted orders grew beyond Q0-qmax × S0-smax (selection/grid_growth.hpp).
 struct GridGrowth {
-  int qmax = 0, smax = 0;          ///< the grid finally fitted
+  int qmax = 0, smax = 0;          ///< the largest Q and S fitted (the grown orders need not fill that rectangle)
   std::vector<std::string> steps;  ///< one line per growth step, in order
   /// Why the selected order still lies on the grid's edge (empty when it lies inside); also a warning.
   std::string edge;
 };
 
 struct FitResult {
-  std::vector<ModelResult> models;  ///< grid order (Q-major) of the final grid (grid.qmax × grid.smax)
+  std::vector<ModelResult> models;  ///< Q-major: the grid Q0-qmax × S0-smax, then the orders growth added
   std::size_t selected = 0;
   PredictiveBand predictive;        ///< of the selected order
   std::vector<std::string> warnings;  ///< e.g. missed modes (see missed_mode_warnings)

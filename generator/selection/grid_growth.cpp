@@ -37,62 +37,63 @@ const ModelResult* rising_from(const std::vector<ModelResult>& models, const Mod
 
 }  // namespace
 
-std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, std::size_t selected, int qmax,
-                                       int smax, const FitSettings& settings, int real_data_values,
-                                       double spent_calls, double budget_calls, std::string& refusal) {
+double pole_passes(const Order& order, double calls, long points) {
+  return calls * static_cast<double>(points) * static_cast<double>(1 + order.q() + order.s());
+}
+
+std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, std::size_t selected,
+                                       const FitSettings& settings, int real_data_values, long points,
+                                       double spent_passes, double budget_passes, std::string& refusal) {
   refusal.clear();
   const ModelResult& best = models.at(selected);
   const Order chosen = best.order;
-  const ModelResult* q_inner = chosen.q() == qmax ? rising_from(models, best, 'Q') : nullptr;
-  const ModelResult* s_inner = chosen.s() == smax ? rising_from(models, best, 'S') : nullptr;
+  const auto fitted = [&](const Order& o) {
+    return std::any_of(models.begin(), models.end(), [&](const ModelResult& m) { return m.order == o; });
+  };
+  const Order q_next(chosen.q() + 1, chosen.s()), s_next(chosen.q(), chosen.s() + 1);
+  const ModelResult* q_inner = fitted(q_next) ? nullptr : rising_from(models, best, 'Q');
+  const ModelResult* s_inner = fitted(s_next) ? nullptr : rising_from(models, best, 'S');
   const bool q_edge = q_inner != nullptr, s_edge = s_inner != nullptr;
   if (!q_edge && !s_edge) return std::nullopt;
-  const std::string edge = q_edge && s_edge ? fmt::format("the corner Q = {}, S = {}", qmax, smax)
-                           : q_edge         ? fmt::format("the edge Q = {}", qmax)
-                                            : fmt::format("the edge S = {}", smax);
+  const std::string edge = q_edge && s_edge ? "the corner" : q_edge ? "the edge in Q" : "the edge in S";
   const int q_cap = settings.qmax + settings.grid_growth, s_cap = settings.smax + settings.grid_growth;
-  const bool grow_q = q_edge && qmax < q_cap && qmax < Order::kMaxPoles;
-  const bool grow_s = s_edge && smax < s_cap && smax < Order::kMaxPoles;
+  const bool grow_q = q_edge && q_next.q() <= q_cap && q_next.q() <= Order::kMaxPoles;
+  const bool grow_s = s_edge && s_next.s() <= s_cap && s_next.s() <= Order::kMaxPoles;
   if (!grow_q && !grow_s) {
-    refusal = fmt::format("{} lies on {} of the grid and the grid may not grow further ({} = {}); larger orders "
-                          "were not tried",
+    refusal = fmt::format("{} lies on {} of the fitted orders and the grid may not grow further ({} = {}); larger "
+                          "orders were not tried",
                           chosen.name(), edge, setting("grid_growth"), settings.grid_growth);
     return std::nullopt;
   }
   GridStep step;
-  step.qmax = qmax + (grow_q ? 1 : 0);
-  step.smax = smax + (grow_s ? 1 : 0);
-  for (const Order& o : order_grid(step.qmax, step.smax))
-    if (o.q() > qmax || o.s() > smax) step.add.push_back(o);
-  const Order largest(step.qmax, step.smax);
+  const Order largest(chosen.q() + (grow_q ? 1 : 0), chosen.s() + (grow_s ? 1 : 0));
+  for (const Order& o : order_grid(largest.q(), largest.s()))
+    if (o.q() >= chosen.q() && o.s() >= chosen.s() && o != chosen && !fitted(o)) step.add.push_back(o);
   if (largest.dim() + 2 > real_data_values) {
-    refusal = fmt::format("{} lies on {} of the grid; growing it to {} would need more than the K = {} real data "
-                          "values; larger orders were not tried",
+    refusal = fmt::format("{} lies on {} of the fitted orders; growing to {} would need more than the K = {} real "
+                          "data values; larger orders were not tried",
                           chosen.name(), edge, largest.name(), real_data_values);
     return std::nullopt;
   }
-  for (const Order& o : step.add) step.calls += estimated_calls(models, o);
-  if (spent_calls + step.calls > budget_calls) {
-    refusal = fmt::format("{} lies on {} of the grid; growing it to Q0-{} x S0-{} would cost about {:.3g} M likelihood "
-                          "calls, beyond the budget ({:.3g} M left of the first round's {:.3g} M); larger orders were "
-                          "not tried (raise {}/{} to include them)",
-                          chosen.name(), edge, step.qmax, step.smax, 1e-6 * step.calls,
-                          1e-6 * std::max(0.0, budget_calls - spent_calls), 1e-6 * budget_calls, setting("qmax"),
+  for (const Order& o : step.add) step.passes += pole_passes(o, estimated_calls(models, o), points);
+  if (spent_passes + step.passes > budget_passes) {
+    std::string names;
+    for (const Order& o : step.add) names += (names.empty() ? "" : ", ") + o.name();
+    refusal = fmt::format("{} lies on {} of the fitted orders; fitting {} would cost about {:.3g} G pole passes "
+                          "(about {:.0f} s of CPU), beyond the budget ({:.3g} G left of {:.3g} G); larger orders "
+                          "were not tried (raise {}/{} to include them)",
+                          chosen.name(), edge, names, 1e-9 * step.passes, step.passes * kSecondsPerPolePass,
+                          1e-9 * std::max(0.0, budget_passes - spent_passes), 1e-9 * budget_passes, setting("qmax"),
                           setting("smax"));
     return std::nullopt;
   }
-  const auto range = [](char kind, int max) {
-    return max == 0 ? fmt::format("{} = 0", kind) : fmt::format("{}0-{}", kind, max);
-  };
-  std::string added;
-  if (grow_q) added = fmt::format("Q = {} for {}", step.qmax, range('S', step.smax));
-  if (grow_s) added += fmt::format("{}S = {} for {}", added.empty() ? "" : " and ", step.smax, range('Q', step.qmax));
-  std::string gains;
+  std::string added, gains;
+  for (const Order& o : step.add) added += (added.empty() ? "" : ", ") + o.name();
   for (const ModelResult* inner : {q_inner, s_inner})
     if (inner != nullptr)
       gains += fmt::format("{}{:.1f} dB over {}", gains.empty() ? "" : ", ", deciban(best.run.log_z, inner->run.log_z),
                            inner->order.name());
-  step.reason = fmt::format("{} lies on {} of the grid ({}): added {}", chosen.name(), edge, gains, added);
+  step.reason = fmt::format("{} lies on {} of the fitted orders ({}): added {}", chosen.name(), edge, gains, added);
   return step;
 }
 

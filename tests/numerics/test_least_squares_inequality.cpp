@@ -4,6 +4,7 @@
 // feasible solution over all active sets (2^m of them, m ≤ 8) is an independent reference.
 #include "core/rng.hpp"
 #include "numerics/least_squares_inequality.hpp"
+#include "test_support.hpp"
 
 #include <Eigen/LU>
 #include <doctest/doctest.h>
@@ -12,17 +13,11 @@
 #include <limits>
 
 using namespace admitgen;
+using test::random_matrix;
 using numerics::least_squares_inequality;
 using numerics::non_negative_least_squares;
 
 namespace {
-
-Eigen::MatrixXd random_matrix(Rng& rng, Eigen::Index r, Eigen::Index c) {
-  Eigen::MatrixXd m(r, c);
-  for (Eigen::Index i = 0; i < r; ++i)
-    for (Eigen::Index j = 0; j < c; ++j) m(i, j) = 2.0 * rng.uniform() - 1.0;
-  return m;
-}
 
 /// A random LSI problem with p unknowns, m constraints and p + 4 rows; h = G x0 − 0.2 for a random x0,
 /// so x0 is feasible and the unconstrained optimum usually is not (active constraints at the optimum).
