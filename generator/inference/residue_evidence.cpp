@@ -99,13 +99,16 @@ double integrate_noise(const ResiduePosterior& c) {
   const double nu = c.k - static_cast<double>(c.mu.size());
   if (nu >= kMinGaussHermiteNu) {
     // t = t* + √2 w x: ∫ e^f dt = √2 w e^{f*} Σ_i w_i e^{f(t_i) − f* + x_i²}.
+    // The terms e_i summed as e^max Σ e^{e_i − max}: one exp per node (not a log_add_exp's exp and log1p).
     const GaussHermite& gh = gauss_hermite();
     const double scale = std::sqrt(2.0) * c.t_scale;
-    double acc = -kInf;
+    std::array<double, kGaussHermiteNodes> e{};
     for (std::size_t i = 0; i < gh.x.size(); ++i)
-      acc = log_add_exp(acc, gh.log_w[i] + residue_log_integrand(c, c.t_mode + scale * gh.x[i]) - f_mode +
-                                 gh.x[i] * gh.x[i]);
-    return f_mode + std::log(scale) + acc;
+      e[i] = gh.log_w[i] + residue_log_integrand(c, c.t_mode + scale * gh.x[i]) - f_mode + gh.x[i] * gh.x[i];
+    const double top = *std::max_element(e.begin(), e.end());
+    double sum = 0.0;
+    for (double ei : e) sum += std::exp(ei - top);
+    return f_mode + std::log(scale) + top + std::log(sum);
   }
   // Few data per residue: the integrand is skewed in t (a heavy tail towards large σ). Adaptive Gauss-Kronrod
   // over the span where it is within 60 nats of its mode, found by doubling steps of the Laplace width.

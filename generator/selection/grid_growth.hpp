@@ -37,10 +37,10 @@ namespace admitgen {
 /// 10 dB, "strong" on Jeffreys' scale: the gain of the last pole across the edge that makes growth worth trying.
 inline constexpr double kGrowthMarginNats = 2.302585092994046;
 
-/// The smallest budget of growth, in pole passes: about 30 s of CPU at the 2.3 ns per pass that the closed-form
+/// The smallest budget of growth, in pole passes: about 60 s of CPU at the 2.3 ns per pass that the closed-form
 /// marginal takes on 1025 points at Q4S4 (`bench_fit --order Q4S4 --basotect`, AMD EPYC, AVX-512).
 inline constexpr double kSecondsPerPolePass = 2.3e-9;
-inline constexpr double kMinGrowthBudgetPasses = 30.0 / kSecondsPerPolePass;
+inline constexpr double kMinGrowthBudgetPasses = 60.0 / kSecondsPerPolePass;
 
 /// Pole passes of `calls` likelihood calls of `order` on `points` data points (the budget's measure).
 double pole_passes(const Order& order, double calls, long points);
