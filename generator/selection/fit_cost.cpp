@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "inference/pole_space.hpp"
 #include "inference/residue_evidence.hpp"
+#include "selection/grid_growth.hpp"
 
 #include <fmt/format.h>
 
@@ -55,7 +56,8 @@ double seconds_per_evaluation(const Measurement& data, const Order& order, const
 }
 
 std::string duration(double seconds) {
-  if (seconds < 120.0) return fmt::format("{:.2g} s", seconds);
+  if (seconds < 100.0) return fmt::format("{:.2g} s", seconds);
+  if (seconds < 120.0) return fmt::format("{:.0f} s", seconds);
   if (seconds < 7200.0) return fmt::format("{:.2g} min", seconds / 60.0);
   if (seconds < 2.0 * 86400.0) return fmt::format("{:.2g} h", seconds / 3600.0);
   return fmt::format("{:.2g} days", seconds / 86400.0);
@@ -86,16 +88,25 @@ FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& se
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   e.threads = std::min(settings.threads > 0 ? settings.threads : cores, e.orders);
   e.wall_seconds = std::max(e.cpu_seconds / e.threads, e.longest_order_seconds);
+  // Growth's budget (selection/grid_growth.hpp): the first round's pole passes or kMinGrowthBudgetPasses,
+  // whichever is larger; the passes are priced at this data's measured cost per pass.
+  if (settings.grid_growth > 0) {
+    const double seconds_per_pass = e.seconds_per_evaluation / (static_cast<double>(e.points) * largest_terms);
+    e.growth_cpu_seconds = std::max(e.cpu_seconds, kMinGrowthBudgetPasses * seconds_per_pass);
+  }
   return e;
 }
 
 std::string FitCostEstimate::describe() const {
   return fmt::format("cost estimate: {} points, {} order(s): ~{:.2g} likelihood evaluations at {:.3g} ms each (largest "
                      "order, timed here) = ~{} of CPU, ~{} on {} thread(s) (within a factor ~2; more if orders are "
-                     "re-run for missed modes or the grid grows); fewer points ({}), a smaller {}/{} or {} cut it",
+                     "re-run for missed modes{}); fewer points ({}), a smaller {}/{} or {} cut it",
                      points, orders, evaluations, seconds_per_evaluation * 1e3, duration(cpu_seconds),
-                     duration(wall_seconds), threads, setting("band"), setting("qmax"), setting("smax"),
-                     setting("sampler.live"));
+                     duration(wall_seconds), threads,
+                     growth_cpu_seconds > 0.0
+                         ? fmt::format(", and up to ~{} of CPU if the grid grows", duration(growth_cpu_seconds))
+                         : std::string(),
+                     setting("band"), setting("qmax"), setting("smax"), setting("sampler.live"));
 }
 
 }  // namespace admitgen

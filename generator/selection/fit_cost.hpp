@@ -29,6 +29,7 @@ struct FitCostEstimate {
   double longest_order_seconds = 0.0;  ///< one order runs on one thread
   int threads = 1;                     ///< workers over orders (at most one per order)
   double wall_seconds = 0.0;           ///< max(cpu / threads, the longest order)
+  double growth_cpu_seconds = 0.0;     ///< at most this much more if the grid grows (its budget); 0 without growth
   /// One line, e.g. "cost estimate: 100000 points, 16 orders: ~2.1e+08 likelihood evaluations at ...".
   std::string describe() const;
 };

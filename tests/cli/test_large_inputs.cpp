@@ -62,6 +62,11 @@ TEST_CASE("large inputs: a fit of 10^5 points states its cost before it starts")
   CHECK_MESSAGE(r.exit_code == 0, r.output);
   CHECK_MESSAGE(r.output.find("cost estimate: 100000 points, 16 order(s)") != std::string::npos, r.output);
   CHECK(r.output.find("likelihood evaluations at") != std::string::npos);
+  // Growth's budget is stated when the grid may grow, and not otherwise.
+  CHECK(r.output.find("if the grid grows") != std::string::npos);
+  const auto fixed = test::run_admitgen(fmt::format("fit {}/points.csv --out {}/out --cost-only --grid-growth 0", dir, dir));
+  CHECK_MESSAGE(fixed.exit_code == 0, fixed.output);
+  CHECK(fixed.output.find("if the grid grows") == std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir + "/out"));  // --cost-only writes nothing
   // Every fit prints it first (a small one here: one order).
   const auto small = test::run_admitgen(fmt::format("fit '{}' --out {}/small --qmax 0 --smax 0 --live 20",
