@@ -20,8 +20,12 @@ namespace {
 
 using Complex = std::complex<double>;
 
-/// The sums of the pass, index 0 for z_0 = 1 (T_0 = N is set by the caller, h_0 = Σ D), 1 … Q + 2S for the poles.
+/// The sums T_a = Σ z_a of the pass, index 0 for z_0 = 1 (T_0 = N is set by the caller), 1 … Q + 2S for the poles.
 using PoleSums = std::array<Complex, kMaxGramResidues>;
+/// g_u = Re Σ conj(φ_u) D per residue u (φ_u its basis function, model/residue_basis.hpp): Re Σ D for G∞,
+/// Re Σ conj(z_a) D for A_q, Re Σ conj(z_θ + z_θ*) D for B_s and Im Σ conj(z_θ − z_θ*) D for C_s. Only these
+/// combinations enter the normal equations, so the pass sums them instead of Σ conj(z_a) D per pole.
+using ResidueSums = std::array<double, kMaxGramResidues>;
 
 /// Sum of the lanes in a fixed order.
 double lane_sum(const double* x) {
@@ -30,28 +34,24 @@ double lane_sum(const double* x) {
   return t;
 }
 
-/// Adds one pole's z_a = 1/(P_a + jω) over every point into the lane sums of T_a and h_a (the lanes are
-/// local arrays of kGramLanes doubles: registers, not memory, in the loop).
-struct LaneSums {
-  alignas(64) double t_re[kGramLanes] = {}, t_im[kGramLanes] = {}, h_re[kGramLanes] = {}, h_im[kGramLanes] = {};
-  void add(int l, double zr, double zi, double b_re, double b_im) {
-    t_re[l] += zr;
-    t_im[l] += zi;
-    // conj(z) b = (zr − j zi)(b_re + j b_im)
-    h_re[l] += zr * b_re + zi * b_im;
-    h_im[l] += zr * b_im - zi * b_re;
-  }
-  void store(PoleSums& t, PoleSums& h, int a) const {
-    t[static_cast<std::size_t>(a)] = Complex(lane_sum(t_re), lane_sum(t_im));
-    h[static_cast<std::size_t>(a)] = Complex(lane_sum(h_re), lane_sum(h_im));
-  }
+/// Lane sums of one real pole: T (re, im) and g = Re Σ conj(z) D = Σ (zr D_re + zi D_im).
+struct RealPoleSums {
+  alignas(64) double t_re[kGramLanes] = {}, t_im[kGramLanes] = {}, g[kGramLanes] = {};
+};
+
+/// Lane sums of one pair: T of θ and of θ*, and the B and C combinations of g with
+/// conj(z) D = (zr D_re + zi D_im) + j (zr D_im − zi D_re):
+///   g_B = Σ (zr₊ + zr₋) D_re + (zi₊ + zi₋) D_im,   g_C = Σ (zr₊ − zr₋) D_im − (zi₊ − zi₋) D_re.
+struct PairSums {
+  alignas(64) double tp_re[kGramLanes] = {}, tp_im[kGramLanes] = {}, tm_re[kGramLanes] = {}, tm_im[kGramLanes] = {};
+  alignas(64) double g_b[kGramLanes] = {}, g_c[kGramLanes] = {};
 };
 
 /// The pass over the points, pole by pole: z_a(ω) = 1/(P_a + jω) for every pole (one division per real
-/// pole, one per pair, as model/multipole.hpp) summed into T_a and h_a (a = 1 … Q + 2S) and Σ D into h_0, each
-/// lane summing the points i ≡ l mod kGramLanes. Padding points carry weight 0 (GramPoints::mask) and zero data.
+/// pole, one per pair, as model/multipole.hpp) summed into T_a and into g of each residue, each lane summing
+/// the points i ≡ l mod kGramLanes. Padding points carry weight 0 (GramPoints::mask) and zero data.
 ADMITGEN_GRAM_CLONES
-void sum_over_points(const GramPoints& points, int q, int s, const double* poles, PoleSums& t, PoleSums& h) {
+void sum_over_points(const GramPoints& points, int q, int s, const double* poles, PoleSums& t, ResidueSums& g) {
   constexpr int L = kGramLanes;
   const Eigen::Index padded = points.padded();
   const double* w = points.omega();
@@ -63,18 +63,22 @@ void sum_over_points(const GramPoints& points, int q, int s, const double* poles
   //   1/(α + j(ω ± β)) = (α − j(ω ± β))/d±,  d± = α² + (ω ± β)²,  1/d+ = d−/(d+ d−),  1/d− = d+/(d+ d−).
   for (int j = 0; j < q; ++j) {
     const double lam = poles[j], lam2 = lam * lam;
-    LaneSums acc;
+    RealPoleSums acc;
     for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
       for (int l = 0; l < L; ++l) {
         const Eigen::Index i = i0 + l;
         const double inv = mask[i] / (lam2 + w2[i]);
-        acc.add(l, lam * inv, -w[i] * inv, b_re[i], b_im[i]);
+        const double zr = lam * inv, zi = -w[i] * inv;
+        acc.t_re[l] += zr;
+        acc.t_im[l] += zi;
+        acc.g[l] += zr * b_re[i] + zi * b_im[i];
       }
-    acc.store(t, h, 1 + j);
+    t[static_cast<std::size_t>(1 + j)] = Complex(lane_sum(acc.t_re), lane_sum(acc.t_im));
+    g[static_cast<std::size_t>(1 + j)] = lane_sum(acc.g);
   }
   for (int j = 0; j < s; ++j) {
     const double al = poles[q + 2 * j], be = poles[q + 2 * j + 1], al2 = al * al;
-    LaneSums plus, minus;
+    PairSums acc;
     for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
       for (int l = 0; l < L; ++l) {
         const Eigen::Index i = i0 + l;
@@ -82,19 +86,24 @@ void sum_over_points(const GramPoints& points, int q, int s, const double* poles
         const double d_plus = al2 + wp * wp, d_minus = al2 + wm * wm;
         const double inv = mask[i] / (d_plus * d_minus);
         const double dp = d_minus * inv, dm = d_plus * inv;
-        plus.add(l, al * dp, -wp * dp, b_re[i], b_im[i]);
-        minus.add(l, al * dm, -wm * dm, b_re[i], b_im[i]);
+        const double zr_p = al * dp, zi_p = -wp * dp, zr_m = al * dm, zi_m = -wm * dm;
+        acc.tp_re[l] += zr_p;
+        acc.tp_im[l] += zi_p;
+        acc.tm_re[l] += zr_m;
+        acc.tm_im[l] += zi_m;
+        acc.g_b[l] += (zr_p + zr_m) * b_re[i] + (zi_p + zi_m) * b_im[i];
+        acc.g_c[l] += (zr_p - zr_m) * b_im[i] - (zi_p - zi_m) * b_re[i];
       }
-    plus.store(t, h, 1 + q + 2 * j);
-    minus.store(t, h, 2 + q + 2 * j);
+    const auto a = static_cast<std::size_t>(1 + q + 2 * j);
+    t[a] = Complex(lane_sum(acc.tp_re), lane_sum(acc.tp_im));
+    t[a + 1] = Complex(lane_sum(acc.tm_re), lane_sum(acc.tm_im));
+    g[a] = lane_sum(acc.g_b);
+    g[a + 1] = lane_sum(acc.g_c);
   }
-  alignas(64) double b_sum_re[L] = {}, b_sum_im[L] = {};
+  alignas(64) double b_sum[L] = {};
   for (Eigen::Index i0 = 0; i0 < padded; i0 += L)
-    for (int l = 0; l < L; ++l) {
-      b_sum_re[l] += b_re[i0 + l];
-      b_sum_im[l] += b_im[i0 + l];
-    }
-  h[0] = Complex(lane_sum(b_sum_re), lane_sum(b_sum_im));
+    for (int l = 0; l < L; ++l) b_sum[l] += b_re[i0 + l];
+  g[0] = lane_sum(b_sum);
 }
 
 /// How residue u enters the pole functions: G = Σ_u r_u Σ_(a, κ) κ z_a (z_0 = 1 for G∞). B_s puts 1 on
@@ -131,9 +140,10 @@ GramPoints::GramPoints(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& data)
 void residue_gram(const GramPoints& points, int q, int s, const double* poles, double* m, double* g) {
   const int p = 1 + q + 2 * s;
   ADMITGEN_ENSURE(p <= kMaxGramResidues, "{} residues", p);
-  // Pole functions z_0 = 1, z_a = 1/(P_a + jω): P of each, T_a = Σ z_a, h_a = Σ conj(z_a) b.
-  PoleSums pole{}, t{}, h{};
-  sum_over_points(points, q, s, poles, t, h);
+  // Pole functions z_0 = 1, z_a = 1/(P_a + jω): P of each, T_a = Σ z_a, and g.
+  PoleSums pole{}, t{};
+  ResidueSums g_sums{};
+  sum_over_points(points, q, s, poles, t, g_sums);
   t[0] = Complex(static_cast<double>(points.size()), 0.0);
   for (int j = 0; j < q; ++j) pole[static_cast<std::size_t>(1 + j)] = Complex(poles[j], 0.0);
   for (int j = 0; j < s; ++j) {
@@ -153,13 +163,10 @@ void residue_gram(const GramPoints& points, int q, int s, const double* poles, d
     const Complex c = std::conj(pole[i]) + pole[k];
     return (std::conj(t[i]) + t[k]) * std::conj(c) / std::norm(c);
   };
-  // M_uv = Re Σ conj(κ_u) κ_v H_ab and g_u = Re Σ conj(κ_u) h_a over the loadings of u and v.
+  // M_uv = Re Σ conj(κ_u) κ_v H_ab over the loadings of u and v (g came from the pass).
   for (int u = 0; u < p; ++u) {
     const Loading lu = loading(u, q);
-    Complex gu;
-    for (int i = 0; i < lu.count; ++i) gu += std::conj(lu.weight[static_cast<std::size_t>(i)]) *
-                                            h[static_cast<std::size_t>(lu.pole[static_cast<std::size_t>(i)])];
-    g[u] = gu.real();
+    g[u] = g_sums[static_cast<std::size_t>(u)];
     for (int v = 0; v <= u; ++v) {
       const Loading lv = loading(v, q);
       Complex muv;
