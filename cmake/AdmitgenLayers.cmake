@@ -24,8 +24,9 @@
 #       ADMITGEN_LAYER_<L>_EXCLUDE (a regex of sources left out, e.g. an executable's main) and
 #       ADMITGEN_LAYER_<L>_UNITY_BATCH (with ADMITGEN_UNITY_BUILD, a unity build of the layer, this many
 #       sources per unit). With LAYER_OPTIMIZATION, ADMITGEN_LAYER_<L>_OPTIMIZATION (e.g. -O1) is the
-#       layer's optimisation in a Release build, after the build type's -O3 so that it wins. The libraries are EXCLUDE_FROM_ALL: a build compiles the layers that what it
-#       builds links (the default build: the CLI's). Build cost: docs/building.md, "Where build time goes".
+#       layer's optimisation in a Release build, after the build type's -O3 so that it wins. The
+#       libraries are EXCLUDE_FROM_ALL: a build compiles the layers that what it builds links (the
+#       default build: the CLI's). Build cost: docs/building.md, "Where build time goes".
 #
 #   admitgen_link_as_layer_source(<target> <layer> <suffix>)   (build only)
 #       Links <target> as if its sources were sources of <layer>: the layer's library and its private
