@@ -9,20 +9,24 @@
 #       (those whose folder exists under <source-dir>), and for each layer L
 #       ADMITGEN_LAYER_<L>_PUBLIC / ADMITGEN_LAYER_<L>_PRIVATE (lists of layers or "runtime").
 #
-#   admitgen_add_layer_libraries(<suffix> <include-root> [COMPILE_OPTIONS <flag>...] [LINK_OPTIONS <flag>...])
+#   admitgen_add_layer_libraries(<suffix> <include-root> [LAYER_OPTIMIZATION] [OPTIMIZATION <flag>...]
+#                                [COMPILE_OPTIONS <flag>...] [LINK_OPTIONS <flag>...])
 #       One library admitgen_layer_<L><suffix> per present layer, linked to the libraries of the
 #       layers it may use, PUBLIC or PRIVATE as declared, and an INTERFACE aggregate
 #       admitgen_core<suffix> over all of them. A layer's include directory is <include-root>/<L>, which
 #       holds a single link <L> -> generator/<L>: `#include "L/x.hpp"` resolves only in a target that
 #       links admitgen_layer_<L>, so an include of a layer that is not below fails to compile.
 #       COMPILE_OPTIONS and LINK_OPTIONS are flags of the whole set and of everything that
-#       links it (the sanitizers), carried by the INTERFACE target admitgen_flags<suffix>.
+#       links it (the sanitizers), carried by the INTERFACE target admitgen_flags<suffix>. OPTIMIZATION
+#       flags are the layers' own, after the build type's: what links the set chooses its own level.
 #       Per layer, the caller may set ADMITGEN_LAYER_<L>_EXTRA_SOURCES (generated sources),
 #       ADMITGEN_LAYER_<L>_EXTRA_INCLUDES, ADMITGEN_LAYER_<L>_EXTRA_LIBS (PUBLIC),
 #       ADMITGEN_LAYER_<L>_EXCLUDE (a regex of sources left out, e.g. an executable's main) and
 #       ADMITGEN_LAYER_<L>_UNITY_BATCH (with ADMITGEN_UNITY_BUILD, a unity build of the layer, this many
-#       sources per unit). The libraries are EXCLUDE_FROM_ALL: a build compiles the layers that what it
-#       builds links (the default build: the CLI's). Build cost: docs/building.md, "Where build time goes".
+#       sources per unit). With LAYER_OPTIMIZATION, ADMITGEN_LAYER_<L>_OPTIMIZATION (e.g. -O1) is the
+#       layer's optimisation in a Release build, after the build type's -O3 so that it wins. The
+#       libraries are EXCLUDE_FROM_ALL: a build compiles the layers that what it builds links (the
+#       default build: the CLI's). Build cost: docs/building.md, "Where build time goes".
 #
 #   admitgen_link_as_layer_source(<target> <layer> <suffix>)   (build only)
 #       Links <target> as if its sources were sources of <layer>: the layer's library and its private
@@ -97,7 +101,7 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
   endfunction()
 
   function(admitgen_add_layer_libraries suffix include_root)
-    cmake_parse_arguments(ARG "" "" "COMPILE_OPTIONS;LINK_OPTIONS" ${ARGN})
+    cmake_parse_arguments(ARG "LAYER_OPTIMIZATION" "" "OPTIMIZATION;COMPILE_OPTIONS;LINK_OPTIONS" ${ARGN})
     set(aggregate admitgen_core${suffix})
     add_library(${aggregate} INTERFACE)
     set(flags admitgen_flags${suffix})
@@ -118,6 +122,10 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
         admitgen_warnings(${target})
         set(usage PUBLIC)
         target_link_libraries(${target} PRIVATE ${private_targets})
+        target_compile_options(${target} PRIVATE ${ARG_OPTIMIZATION})
+        if(ARG_LAYER_OPTIMIZATION AND ADMITGEN_LAYER_${layer}_OPTIMIZATION)
+          target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:${ADMITGEN_LAYER_${layer}_OPTIMIZATION}>)
+        endif()
         if(ADMITGEN_UNITY_BUILD AND ADMITGEN_LAYER_${layer}_UNITY_BATCH)
           set_target_properties(${target} PROPERTIES UNITY_BUILD ON
                                 UNITY_BUILD_BATCH_SIZE ${ADMITGEN_LAYER_${layer}_UNITY_BATCH})
