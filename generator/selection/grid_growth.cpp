@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace admitgen {
 namespace {
@@ -23,16 +24,38 @@ double estimated_calls(const std::vector<ModelResult>& models, const Order& orde
   return static_cast<double>(from->run.calls) * ratio * ratio;
 }
 
-/// The order inside the grid next to the selected one across its edge of kind `kind` ('Q' or 'S'), when the
-/// evidence still rises across that edge: the selected ln Z exceeds that order's by the margin of the header.
-/// nullptr otherwise, and always at Q = 0 / S = 0.
-const ModelResult* rising_from(const std::vector<ModelResult>& models, const ModelResult& chosen, char kind) {
+/// Whether the evidence still rises across the selected order's edge of kind `kind` ('Q' or 'S'): its ln Z
+/// exceeds that of the order with one pole of that kind fewer (`inner`) by the margin of the header. Never at
+/// Q = 0 / S = 0. When that order was not fitted (growth around the selection leaves such holes, e.g. Q2S5 next to
+/// an added Q3S5), nothing says whether the evidence still rises: `hole`, which growth does not follow (it would
+/// cost a larger order on no evidence) but which the result states.
+struct Rise {
+  bool rising = false, hole = false;
+  const ModelResult* inner = nullptr;
+};
+
+Rise rise_across(const std::vector<ModelResult>& models, const ModelResult& chosen, char kind) {
   const int q = chosen.order.q() - (kind == 'Q' ? 1 : 0), s = chosen.order.s() - (kind == 'S' ? 1 : 0);
-  if (q < 0 || s < 0) return nullptr;
+  if (q < 0 || s < 0) return {};
   const auto inner = std::find_if(models.begin(), models.end(), [&](const ModelResult& m) { return m.order == Order(q, s); });
-  if (inner == models.end()) return nullptr;
+  if (inner == models.end()) return {false, true, nullptr};
   const double margin = std::max(kGrowthMarginNats, 3.0 * std::hypot(chosen.run.log_z_error, inner->run.log_z_error));
-  return chosen.run.log_z > inner->run.log_z + margin ? &*inner : nullptr;
+  return {chosen.run.log_z > inner->run.log_z + margin, false, &*inner};
+}
+
+/// The refusal's note on holes next to the selection, e.g. "Q2S5, one real pole fewer than Q3S5, was not fitted,
+/// so whether the evidence still rises with real poles is not known".
+std::string hole_text(const Order& chosen, const Rise& q_rise, const Rise& s_rise) {
+  std::string out;
+  for (const auto& [rise, kind] : {std::pair{q_rise, 'Q'}, std::pair{s_rise, 'S'}}) {
+    if (!rise.hole) continue;
+    const Order inner(chosen.q() - (kind == 'Q' ? 1 : 0), chosen.s() - (kind == 'S' ? 1 : 0));
+    out += fmt::format("{}{}, one {} fewer than {}, was not fitted, so whether the evidence still rises with more "
+                       "{} is not known",
+                       out.empty() ? "" : "; ", inner.name(), kind == 'Q' ? "real pole" : "pair", chosen.name(),
+                       kind == 'Q' ? "real poles" : "pairs");
+  }
+  return out;
 }
 
 }  // namespace
@@ -51,48 +74,51 @@ std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, s
     return std::any_of(models.begin(), models.end(), [&](const ModelResult& m) { return m.order == o; });
   };
   const Order q_next(chosen.q() + 1, chosen.s()), s_next(chosen.q(), chosen.s() + 1);
-  const ModelResult* q_inner = fitted(q_next) ? nullptr : rising_from(models, best, 'Q');
-  const ModelResult* s_inner = fitted(s_next) ? nullptr : rising_from(models, best, 'S');
-  const bool q_edge = q_inner != nullptr, s_edge = s_inner != nullptr;
-  if (!q_edge && !s_edge) return std::nullopt;
+  const Rise q_rise = fitted(q_next) ? Rise{} : rise_across(models, best, 'Q');
+  const Rise s_rise = fitted(s_next) ? Rise{} : rise_across(models, best, 'S');
+  const bool q_edge = q_rise.rising, s_edge = s_rise.rising;
+  const std::string holes = hole_text(chosen, q_rise, s_rise);
+  // A refusal also states the holes next to the selection.
+  const auto refuse = [&](std::string why) {
+    refusal = holes.empty() ? std::move(why) : why.empty() ? holes + "; larger orders were not tried" : why + "; " + holes;
+    return std::nullopt;
+  };
+  if (!q_edge && !s_edge) return refuse("");
   const std::string edge = q_edge && s_edge ? "the corner" : q_edge ? "the edge in Q" : "the edge in S";
   const int q_cap = settings.qmax + settings.grid_growth, s_cap = settings.smax + settings.grid_growth;
   const bool grow_q = q_edge && q_next.q() <= q_cap && q_next.q() <= Order::kMaxPoles;
   const bool grow_s = s_edge && s_next.s() <= s_cap && s_next.s() <= Order::kMaxPoles;
   if (!grow_q && !grow_s) {
-    refusal = fmt::format("{} lies on {} of the fitted orders and the grid may not grow further ({} = {}); larger "
-                          "orders were not tried",
-                          chosen.name(), edge, setting("grid_growth"), settings.grid_growth);
-    return std::nullopt;
+    return refuse(fmt::format("{} lies on {} of the fitted orders and the grid may not grow further ({} = {}); "
+                              "larger orders were not tried",
+                              chosen.name(), edge, setting("grid_growth"), settings.grid_growth));
   }
   GridStep step;
   const Order largest(chosen.q() + (grow_q ? 1 : 0), chosen.s() + (grow_s ? 1 : 0));
   for (const Order& o : order_grid(largest.q(), largest.s()))
     if (o.q() >= chosen.q() && o.s() >= chosen.s() && o != chosen && !fitted(o)) step.add.push_back(o);
   if (largest.dim() + 2 > real_data_values) {
-    refusal = fmt::format("{} lies on {} of the fitted orders; growing to {} would need more than the K = {} real "
-                          "data values; larger orders were not tried",
-                          chosen.name(), edge, largest.name(), real_data_values);
-    return std::nullopt;
+    return refuse(fmt::format("{} lies on {} of the fitted orders; growing to {} would need more than the K = {} real "
+                              "data values; larger orders were not tried",
+                              chosen.name(), edge, largest.name(), real_data_values));
   }
   for (const Order& o : step.add) step.passes += pole_passes(o, estimated_calls(models, o), points);
   if (spent_passes + step.passes > budget_passes) {
     std::string names;
     for (const Order& o : step.add) names += (names.empty() ? "" : ", ") + o.name();
-    refusal = fmt::format("{} lies on {} of the fitted orders; fitting {} would cost about {:.3g} G pole passes "
-                          "(about {:.0f} s of CPU), beyond the budget ({:.3g} G left of {:.3g} G); larger orders "
-                          "were not tried (raise {}/{} to include them)",
-                          chosen.name(), edge, names, 1e-9 * step.passes, step.passes * kSecondsPerPolePass,
-                          1e-9 * std::max(0.0, budget_passes - spent_passes), 1e-9 * budget_passes, setting("qmax"),
-                          setting("smax"));
-    return std::nullopt;
+    return refuse(fmt::format("{} lies on {} of the fitted orders; fitting {} would cost about {:.3g} G pole passes "
+                              "(about {:.0f} s of CPU), beyond the budget ({:.3g} G left of {:.3g} G); larger orders "
+                              "were not tried (raise {}/{} to include them)",
+                              chosen.name(), edge, names, 1e-9 * step.passes, step.passes * kSecondsPerPolePass,
+                              1e-9 * std::max(0.0, budget_passes - spent_passes), 1e-9 * budget_passes,
+                              setting("qmax"), setting("smax")));
   }
   std::string added, gains;
   for (const Order& o : step.add) added += (added.empty() ? "" : ", ") + o.name();
-  for (const ModelResult* inner : {q_inner, s_inner})
-    if (inner != nullptr)
-      gains += fmt::format("{}{:.1f} dB over {}", gains.empty() ? "" : ", ", deciban(best.run.log_z, inner->run.log_z),
-                           inner->order.name());
+  for (const Rise& rise : {q_rise, s_rise})
+    if (rise.rising)
+      gains += fmt::format("{}{:.1f} dB over {}", gains.empty() ? "" : ", ", deciban(best.run.log_z, rise.inner->run.log_z),
+                           rise.inner->order.name());
   step.reason = fmt::format("{} lies on {} of the fitted orders ({}): added {}", chosen.name(), edge, gains, added);
   return step;
 }

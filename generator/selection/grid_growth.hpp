@@ -10,7 +10,9 @@
 /// the orders far from the selection along the new edge (few poles of one kind, many of the other) cost as much
 /// as the ones next to it and lie thousands of dB below. An edge at Q = 0 or S = 0 (a kind the grid leaves out)
 /// never grows. Growth stops when the selected order has fitted neighbours across every rising edge, or when a
-/// limit refuses it; the result then says which, and a selection on the edge becomes a warning.
+/// limit refuses it; the result then says which, and a selection on the edge becomes a warning. A hole next to
+/// the selection (the order with one pole of a kind fewer not fitted: nothing says whether that kind still
+/// rises) is not followed but stated in that warning.
 ///
 /// Limits (all deterministic, so equal inputs and seed give equal grids whatever the thread count):
 ///   - at most `FitSettings::grid_growth` extra real poles and as many extra pairs beyond qmax/smax;

@@ -127,6 +127,18 @@ TEST_CASE("grid growth: the rule on hand-made evidence grids") {
     CHECK(next.step->add.size() == 3);  // Q2S3, Q3S2, Q3S3
     // An order inside the grown set whose neighbours across its edges are fitted does not grow.
     CHECK_FALSE(step_of(grown, Order(1, 1)).step);
+    // A hole is stated, not followed: with Q2S3 added and selected, Q1S3 was never fitted, so nothing says
+    // whether the evidence still rises in Q. Growth follows S alone (Q2S4: S rises over Q2S2) ...
+    grown.push_back(fitted(2, 3, 20.0 * 2 + 50.0 * 3, 0.3, 1000));
+    const Step hole = step_of(grown, Order(2, 3), 3);
+    REQUIRE(hole.step);
+    REQUIRE(hole.step->add.size() == 1);
+    CHECK(hole.step->add[0] == Order(2, 4));
+    // ... and where nothing rises any more (Q2S4 fitted and lower), the refusal names the hole: a warning.
+    grown.push_back(fitted(2, 4, 0.0, 0.3, 1000));
+    const Step stated = step_of(grown, Order(2, 3), 3);
+    CHECK_FALSE(stated.step);
+    CHECK(stated.refusal.find("Q1S3, one real pole fewer than Q2S3, was not fitted") != std::string::npos);
   }
   SUBCASE("the cap and the data count stop growth with a reason") {
     const auto g = grid_of(1, 3, pairs_rise);  // settings.smax = 1, growth 2: S may reach 3, not 4
