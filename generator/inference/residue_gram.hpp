@@ -3,8 +3,8 @@
 /// The normal equations of the residues (docs/method.md, "Residues given the poles", which derives the
 /// partial fractions used here): with A = [Re Φ; Im Φ] and b = [Re D; Im D],
 ///   M = AᵀA,   g = Aᵀb,
-/// from the sums T_a = Σ_i z_a(ω_i) and h_a = Σ_i conj z_a(ω_i) D_i of the pole functions
-/// z_a = 1/(P_a + jω) over the Q + 2S poles: Σ_i conj z_a z_b = (conj T_a + T_b)/(P̄_a + P_b). One pass over
+/// from the sums T_a = Σ_i z_a(ω_i) of the pole functions z_a = 1/(P_a + jω) over the Q + 2S poles,
+/// Σ_i conj z_a z_b = (conj T_a + T_b)/(P̄_a + P_b), and g_u = Re Σ_i conj φ_u(ω_i) D_i summed per residue. One pass over
 /// the points per pole, O(N (Q + 2S)), instead of forming AᵀA, O(N p²); A is never stored.
 ///
 /// Runtime SIMD dispatch: the pass is compiled for AVX-512, AVX2 and the x86-64 baseline and the best

@@ -66,19 +66,20 @@ bool EigenProjection::compute(const Eigen::MatrixXd& a, const Eigen::VectorXd& y
   h_ = tri_.matrixQ().adjoint() * y;
   double* d = mu_.data();
   double* e = sub_.data();
-  const int last = static_cast<int>(n) - 1;
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
   // Deflation (§8.3.5): an off-diagonal entry below ε (|d_k| + |d_k+1|) is set to zero; the trailing
   // diagonal part grows until the whole matrix is diagonal.
-  int hi = last, sweeps = 0;
+  const auto negligible = [&](int k) {
+    return std::abs(e[k]) <= std::numeric_limits<double>::epsilon() * (std::abs(d[k]) + std::abs(d[k + 1]));
+  };
+  int hi = static_cast<int>(n) - 1, sweeps = 0;
   while (hi > 0) {
-    if (std::abs(e[hi - 1]) <= kEps * (std::abs(d[hi - 1]) + std::abs(d[hi]))) {
+    if (negligible(hi - 1)) {
       e[hi - 1] = 0.0;
       --hi;
       continue;
     }
     int lo = hi - 1;
-    while (lo > 0 && std::abs(e[lo - 1]) > kEps * (std::abs(d[lo - 1]) + std::abs(d[lo]))) --lo;
+    while (lo > 0 && !negligible(lo - 1)) --lo;
     if (++sweeps > 30 * static_cast<int>(n)) return false;
     qr_step(d, e, lo, hi, h_.data());
   }

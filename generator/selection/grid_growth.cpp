@@ -31,16 +31,24 @@ double estimated_calls(const std::vector<ModelResult>& models, const Order& orde
 /// cost a larger order on no evidence) but which the result states.
 struct Rise {
   bool rising = false, hole = false;
-  const ModelResult* inner = nullptr;
+  Order inner{0, 0};                    ///< the order with one pole of the kind fewer
+  const ModelResult* fit = nullptr;     ///< its result, when fitted
 };
+
+/// The fitted result of `order`, or nullptr.
+const ModelResult* find_fitted(const std::vector<ModelResult>& models, const Order& order) {
+  const auto it = std::find_if(models.begin(), models.end(), [&](const ModelResult& m) { return m.order == order; });
+  return it == models.end() ? nullptr : &*it;
+}
 
 Rise rise_across(const std::vector<ModelResult>& models, const ModelResult& chosen, char kind) {
   const int q = chosen.order.q() - (kind == 'Q' ? 1 : 0), s = chosen.order.s() - (kind == 'S' ? 1 : 0);
   if (q < 0 || s < 0) return {};
-  const auto inner = std::find_if(models.begin(), models.end(), [&](const ModelResult& m) { return m.order == Order(q, s); });
-  if (inner == models.end()) return {false, true, nullptr};
-  const double margin = std::max(kGrowthMarginNats, 3.0 * std::hypot(chosen.run.log_z_error, inner->run.log_z_error));
-  return {chosen.run.log_z > inner->run.log_z + margin, false, &*inner};
+  const Order inner(q, s);
+  const ModelResult* fit = find_fitted(models, inner);
+  if (fit == nullptr) return {false, true, inner, nullptr};
+  const double margin = std::max(kGrowthMarginNats, 3.0 * std::hypot(chosen.run.log_z_error, fit->run.log_z_error));
+  return {chosen.run.log_z > fit->run.log_z + margin, false, inner, fit};
 }
 
 /// The refusal's note on holes next to the selection, e.g. "Q2S5, one real pole fewer than Q3S5, was not fitted,
@@ -49,10 +57,9 @@ std::string hole_text(const Order& chosen, const Rise& q_rise, const Rise& s_ris
   std::string out;
   for (const auto& [rise, kind] : {std::pair{q_rise, 'Q'}, std::pair{s_rise, 'S'}}) {
     if (!rise.hole) continue;
-    const Order inner(chosen.q() - (kind == 'Q' ? 1 : 0), chosen.s() - (kind == 'S' ? 1 : 0));
     out += fmt::format("{}{}, one {} fewer than {}, was not fitted, so whether the evidence still rises with more "
                        "{} is not known",
-                       out.empty() ? "" : "; ", inner.name(), kind == 'Q' ? "real pole" : "pair", chosen.name(),
+                       out.empty() ? "" : "; ", rise.inner.name(), kind == 'Q' ? "real pole" : "pair", chosen.name(),
                        kind == 'Q' ? "real poles" : "pairs");
   }
   return out;
@@ -70,9 +77,7 @@ std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, s
   refusal.clear();
   const ModelResult& best = models.at(selected);
   const Order chosen = best.order;
-  const auto fitted = [&](const Order& o) {
-    return std::any_of(models.begin(), models.end(), [&](const ModelResult& m) { return m.order == o; });
-  };
+  const auto fitted = [&](const Order& o) { return find_fitted(models, o) != nullptr; };
   const Order q_next(chosen.q() + 1, chosen.s()), s_next(chosen.q(), chosen.s() + 1);
   const Rise q_rise = fitted(q_next) ? Rise{} : rise_across(models, best, 'Q');
   const Rise s_rise = fitted(s_next) ? Rise{} : rise_across(models, best, 'S');
@@ -117,8 +122,8 @@ std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, s
   for (const Order& o : step.add) added += (added.empty() ? "" : ", ") + o.name();
   for (const Rise& rise : {q_rise, s_rise})
     if (rise.rising)
-      gains += fmt::format("{}{:.1f} dB over {}", gains.empty() ? "" : ", ", deciban(best.run.log_z, rise.inner->run.log_z),
-                           rise.inner->order.name());
+      gains += fmt::format("{}{:.1f} dB over {}", gains.empty() ? "" : ", ", deciban(best.run.log_z, rise.fit->run.log_z),
+                           rise.fit->order.name());
   step.reason = fmt::format("{} lies on {} of the fitted orders ({}): added {}", chosen.name(), edge, gains, added);
   return step;
 }
