@@ -3,10 +3,11 @@
 
 #include "core/errors.hpp"
 #include "core/rng.hpp"
-#include "inference/ellipsoid_union.hpp"
+#include "inference/ellipsoid_proposal.hpp"
 #include "inference/evidence.hpp"
 #include "inference/live_point_clusters.hpp"
-#include "inference/slice_step.hpp"
+#include "inference/live_points.hpp"
+#include "inference/slice_proposal.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -32,12 +33,6 @@ struct EvidenceAccumulator {
     h = h_part + h_prev - new_log_z;
     log_z = new_log_z;
   }
-};
-
-/// The n live points as columns: position in the unit cube, θ, ln L.
-struct LivePoints {
-  Eigen::MatrixXd u, theta;
-  Eigen::VectorXd log_l;
 };
 
 /// The initial live points, drawn from the prior by rejection of ln L = −∞. That value marks a point
@@ -125,128 +120,56 @@ class Compression {
   double contour_ = kMinusInf;
 };
 
-/// The constrained step: the dead point is replaced by a uniform draw from the bounding ellipsoids above
-/// the contour (NestedSettings::ellipsoid_draws), or by a copy of a random surviving live point (it
-/// already satisfies L > L*) moved by slice sampling along its cluster's whitened axes; the new point
-/// joins that cluster.
+/// The constrained step (inference/proposal.hpp): the dead point is replaced by a uniform draw from the
+/// bounding ellipsoid above the contour (NestedSettings::ellipsoid_draws; inference/ellipsoid_proposal.hpp) or
+/// by a slice chain from a surviving live point (inference/slice_proposal.hpp); the new point joins the
+/// cluster it came from.
 ///
-/// Which of the two: both give a draw from the constrained prior (the ellipsoids up to how well their union
-/// covers the contour), so the choice sets the cost. The ellipsoids serve only while the live points form
-/// one cluster: where they split (several modes, or a spare pole trading roles with another across a
-/// curved region) a missed corner of the contour would lose posterior mass for good, while a slice chain
-/// from a live point reaches wherever live points are. Within one cluster they serve while their
-/// likelihood calls per replacement since the last covariance update stay below a slice chain's running
-/// mean (counting the draws that missed the contour, and the slice chain after a replacement that found
-/// nothing within a slice chain's calls). Draws rejected without a call (outside the cube or the canonical
-/// domain of a folded model, which can be most of an ellipsoid that straddles a fold's seam) are counted
-/// too, kDrawsPerCall of them as one call. Where the contour is nearly ellipsoidal one or two calls replace
-/// 3 + dim slices; where it is far from it, slices serve (docs/method.md, "Sampler and evidence error").
+/// Which of the two: both give a draw from the constrained prior (the ellipsoid up to how well it covers the
+/// contour), so the choice sets the cost. The ellipsoid serves while its likelihood calls per replacement
+/// since the last covariance update stay below a slice chain's running mean (EllipsoidProposal::pays); a
+/// replacement for which it finds nothing within a slice chain's mean calls moves by slices instead, and those
+/// calls are charged to it. Where the contour is nearly ellipsoidal one or two calls replace 3 + dim slices;
+/// where it is far from it, slices serve (docs/method.md, "Sampler and evidence error").
 class Replacement {
  public:
-  /// Rejected draws (normal deviates, a triangular product, the fold) that cost as much as one likelihood
-  /// call: a call at the smallest data sets here (60 points, 3 residues) takes about 20 times a draw at
-  /// dim 12; larger data make calls dearer, so this undercounts the calls' share, never the draws'.
-  static constexpr long kDrawsPerCall = 20;
-
   Replacement(const Model& model, const NestedSettings& settings)
-      : model_(model),
-        n_(settings.live),
-        slices_(settings.slices > 0 ? settings.slices : 3 + model.dim()),
-        cov_interval_(settings.covariance_interval > 0 ? settings.covariance_interval : std::max(1, n_ / 10)),
+      : cov_interval_(settings.covariance_interval > 0 ? settings.covariance_interval
+                                                       : std::max(1, settings.live / 10)),
         min_cluster_(std::max(2 * model.dim(), 20)),
-        ellipsoid_draws_(settings.ellipsoid_draws),
-        enlarge_(settings.ellipsoid_enlarge),
-        slice_calls_(4.0 * slices_),
-        step_(model.dim(), model.prior_transform, model.log_likelihood),
-        u_(model.dim()),
-        theta_(model.dim()),
-        folded_(model.dim()) {}
+        slices_(model, settings.slices > 0 ? settings.slices : 3 + model.dim()) {
+    if (settings.ellipsoid_draws) ellipsoids_.emplace(model, settings.ellipsoid_enlarge);
+  }
 
   void replace(LivePoints& live, Eigen::Index worst, long iteration, Rng& rng, NestedRun& run) {
     // Clusters need enough points for a covariance: at least 2·dim and 20.
     constexpr int kMaxClusters = 8;
     if (iteration % cov_interval_ == 0) {
       clusters_ = cluster_live_points(live.u, min_cluster_, kMaxClusters);
-      // Each cluster's slice width starts from the previous update's widths (their geometric mean over
-      // clusters: new clusters need not match old ones) and adapts on its own.
-      double log_mean = 0.0;
-      for (double w : slice_widths_) log_mean += std::log(w);
-      const double start = slice_widths_.empty() ? 1.0 : std::exp(log_mean / static_cast<double>(slice_widths_.size()));
-      slice_widths_.assign(clusters_.axes.size(), start);
-      if (ellipsoid_draws_ && clusters_.axes.size() == 1) {
-        bounds_.emplace(live.u, clusters_, enlarge_);
-        bound_cost_ = 0.0;
-        bound_draws_ = 0;
-      } else {
-        bounds_.reset();
-      }
+      slices_.update(live, clusters_);
+      if (ellipsoids_) ellipsoids_->update(live, clusters_);
     }
-    int cluster = 0;
-    double log_l = 0.0;
-    const bool bounded = bounds_ && bound_cost_ <= slice_calls_ * static_cast<double>(bound_draws_ + 1);
-    if (!bounded || !draw_from_bounds(live.log_l[worst], rng, run, cluster, log_l)) {
-      Eigen::Index start = static_cast<Eigen::Index>(rng.below(static_cast<std::uint64_t>(n_ - 1)));
-      if (start >= worst) ++start;
-      cluster = clusters_.label[static_cast<std::size_t>(start)];
-      u_ = live.u.col(start);
-      theta_ = live.theta.col(start);
-      log_l = live.log_l[start];
-      step_.set_axes(clusters_.axes[static_cast<std::size_t>(cluster)], slice_widths_[static_cast<std::size_t>(cluster)]);
-      const long calls = step_.move(u_, theta_, log_l, live.log_l[worst], slices_, rng);
+    const double log_l_min = live.log_l[worst];
+    const bool bounded = ellipsoids_ && ellipsoids_->pays(slices_.mean_calls());
+    const long budget = std::max(1L, std::lround(slices_.mean_calls()));
+    if (!bounded || !ellipsoids_->propose(live, worst, log_l_min, budget, rng, point_, run.calls)) {
+      long calls = 0;
+      slices_.propose(live, worst, log_l_min, budget, rng, point_, calls);
       run.calls += calls;
-      slice_calls_ = 0.9 * slice_calls_ + 0.1 * static_cast<double>(calls);
-      if (bounded) bound_cost_ += static_cast<double>(calls);  // the ellipsoids missed: their replacement cost these too
-      if (model_.fold) {
-        model_.fold(u_.data());
-        model_.prior_transform(u_.data(), theta_.data());  // same ln L: the likelihood is invariant
-      }
+      if (bounded) ellipsoids_->charge(calls);  // the ellipsoid missed: its replacement cost these too
     }
-    clusters_.label[static_cast<std::size_t>(worst)] = cluster;
-    live.u.col(worst) = u_;
-    live.theta.col(worst) = theta_;
-    live.log_l[worst] = log_l;
+    clusters_.label[static_cast<std::size_t>(worst)] = point_.cluster;
+    live.u.col(worst) = point_.u;
+    live.theta.col(worst) = point_.theta;
+    live.log_l[worst] = point_.log_l;
   }
 
  private:
-  /// Draws from the ellipsoids until a point of the canonical domain lies above the contour: true, with
-  /// (u_, theta_, log_l) set. A draw outside the unit cube or off the canonical domain (the fold's fixed
-  /// points; folding it instead would double the density where an ellipsoid crosses a seam) is rejected
-  /// without a likelihood call. Gives up after a slice chain's mean calls or kDrawsPerCall times as many draws.
-  bool draw_from_bounds(double log_l_min, Rng& rng, NestedRun& run, int& cluster, double& log_l) {
-    const long max_calls = std::max(1L, std::lround(slice_calls_)), max_draws = kDrawsPerCall * max_calls;
-    long calls = 0, draws = 0;
-    bool found = false;
-    for (; draws < max_draws && calls < max_calls && !found; ++draws) {
-      if (!bounds_->draw(rng, u_, cluster)) continue;
-      if ((u_.array() < 0.0).any() || (u_.array() >= 1.0).any()) continue;
-      if (model_.fold) {
-        folded_ = u_;
-        model_.fold(folded_.data());
-        if (folded_ != u_) continue;
-      }
-      model_.prior_transform(u_.data(), theta_.data());
-      log_l = model_.log_likelihood(theta_.data());
-      ++calls;
-      found = log_l > log_l_min;
-    }
-    run.calls += calls;
-    bound_cost_ += static_cast<double>(calls) + static_cast<double>(draws - calls) / kDrawsPerCall;
-    ++bound_draws_;
-    return found;
-  }
-
-  const Model& model_;
-  int n_, slices_, cov_interval_, min_cluster_;
-  bool ellipsoid_draws_;
-  double enlarge_;
-  double slice_calls_;            ///< running mean of a slice chain's likelihood calls
-  double bound_cost_ = 0.0;  ///< ellipsoid calls (rejected draws weighted by 1/kDrawsPerCall) since the last update
-  long bound_draws_ = 0;     ///< replacements by the ellipsoids since the last update
-  SliceStep step_;
-  std::vector<double> slice_widths_;  ///< per cluster (inference/slice_step.hpp)
+  int cov_interval_, min_cluster_;
   LivePointClusters clusters_;
-  std::optional<EllipsoidUnion> bounds_;
-  Eigen::VectorXd u_, theta_, folded_;
+  SliceProposal slices_;
+  std::optional<EllipsoidProposal> ellipsoids_;
+  ProposedPoint point_;
 };
 
 }  // namespace
