@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <ctime>
 #include <exception>
 #include <mutex>
@@ -43,6 +44,14 @@ double thread_cpu_seconds() {
   if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0) return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 #endif
   return 0.0;
+}
+
+TaskTime timed(const std::function<void()>& task) {
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
+  task();
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+          thread_cpu_seconds() - cpu_start};
 }
 
 }  // namespace admitgen

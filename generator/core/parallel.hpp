@@ -23,4 +23,13 @@ void run_in_parallel(const std::vector<std::size_t>& queue, int threads, const s
 /// on the pool cost, for benchmarks on a shared machine (never stored in an output).
 double thread_cpu_seconds();
 
+/// Wall and thread CPU time of one task.
+struct TaskTime {
+  double seconds = 0.0;
+  double cpu_seconds = 0.0;
+};
+
+/// Runs task() on the calling thread and returns how long it took.
+TaskTime timed(const std::function<void()>& task);
+
 }  // namespace admitgen

@@ -4,8 +4,8 @@
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
-#include "core/rng.hpp"
 #include "diagnosis/residual_whiteness.hpp"
+#include "inference/comparison.hpp"
 #include "inference/evidence.hpp"
 
 #include <fmt/format.h>
@@ -15,63 +15,11 @@
 #include <cmath>
 #include <condition_variable>
 #include <limits>
-#include <map>
 #include <mutex>
 #include <numeric>
-#include <tuple>
 
 namespace admitgen::diagnosis {
 namespace {
-
-/// Status line of the candidates: the running ones with their progress, and the time left, estimated
-/// from the elapsed time and the work done (a quadrature candidate counts 1, a sampled one 10 per
-/// parameter; a run's fraction is how far the logarithm of its remaining-evidence estimate has come down
-/// from its first value towards dlogz).
-class CandidateProgress {
- public:
-  CandidateProgress(Progress& out, const std::vector<EffectCandidate>& candidates, double dlogz)
-      : out_(out), dlogz_(dlogz), start_(std::chrono::steady_clock::now()) {
-    for (const auto& c : candidates) total_ += cost(c);
-  }
-  void running(const EffectCandidate& c, const NestedStatus& s) {
-    if (!out_.enabled()) return;
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto& [weight, first, fraction] = active_[c.label()];
-    if (weight == 0.0) weight = cost(c), first = s.remaining;
-    fraction = first > dlogz_ ? std::clamp(std::log(first / s.remaining) / std::log(first / dlogz_), 0.0, 0.99) : 0.0;
-    show();
-  }
-  void done(const EffectCandidate& c) {
-    if (!out_.enabled()) return;
-    std::lock_guard<std::mutex> lock(mutex_);
-    active_.erase(c.label());
-    finished_ += cost(c);
-    ++count_;
-    show();
-  }
-
- private:
-  static double cost(const EffectCandidate& c) { return c.priors.size() <= 1 ? 1.0 : 10.0 * c.priors.size(); }
-  void show() {
-    double work = finished_;
-    std::string running;
-    for (const auto& [name, a] : active_) {
-      work += std::get<0>(a) * std::get<2>(a);
-      running += fmt::format("  {} {:.0f} %", name, 100.0 * std::get<2>(a));
-    }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const double fraction = work / total_;
-    std::string left = fraction > 0.05 ? fmt::format(", about {:.0f} s left", elapsed * (1.0 - fraction) / fraction) : "";
-    out_.update(fmt::format("[{} candidates done{}]{}", count_, left, running));
-  }
-  Progress& out_;
-  double dlogz_;
-  std::chrono::steady_clock::time_point start_;
-  double total_ = 0.0, finished_ = 0.0;
-  int count_ = 0;
-  std::mutex mutex_;
-  std::map<std::string, std::tuple<double, double, double>> active_;  ///< name → (cost, first remaining, fraction)
-};
 
 /// Evidence, posterior and best ϑ of one candidate from its run. Under a reference density the run's
 /// likelihood is L/q: its posterior weights are those of L (docs/method.md), its best point is found
@@ -250,52 +198,47 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
     (dim == 0 || (dim == 1 && settings.use_quadrature) ? cheap : sampled).push_back(i);
   }
   Leader leader(cheap.size(), log_z_floor);
-  CandidateProgress status(progress, candidates, settings.sampler.dlogz);
-  const auto timed = [&](std::size_t i, const auto& body) {
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = thread_cpu_seconds();
-    results[i] = start_result(candidates[i]);
-    body(results[i]);
-    results[i].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    results[i].cpu_seconds = thread_cpu_seconds() - cpu_start;
-    status.done(candidates[i]);
-  };
-  const auto by_quadrature = [&](std::size_t i) {
+  const auto by_quadrature = [&](std::size_t i, EffectResult& r) {
     LeaderShare share{leader};  // reports this evidence (−∞ if it throws) when it goes out of scope
-    timed(i, [&](EffectResult& r) {
-      r.method = candidates[i].priors.empty() ? "closed_form" : "quadrature";
-      const Model model = effect_model(candidates[i], likelihood);
-      take_run(evidence_by_quadrature(model, settings.quadrature), model, candidates[i], r);
-      share.log_z = r.log_z;
-    });
+    r.method = candidates[i].priors.empty() ? "closed_form" : "quadrature";
+    const Model model = effect_model(candidates[i], likelihood);
+    take_run(evidence_by_quadrature(model, settings.quadrature), model, candidates[i], r);
+    share.log_z = r.log_z;
   };
-  const auto by_sampling = [&](std::size_t i) {
-    timed(i, [&](EffectResult& r) {
-      r.method = "nested_sampling";
-      NestedSettings sampler = settings.sampler;
-      sampler.seed = derive_seed(settings.sampler.seed, streams[i]);
-      NestedStopFn stop;
-      if (settings.early_stop_deciban > 0.0)
-        stop = [&](const NestedStatus& s) {
-          if (!early_stop_allowed(s, sampler.live)) return false;
-          const double bound = early_stop_bound(s);
-          if (deciban(bound, leader.wait()) >= -settings.early_stop_deciban) return false;
-          r.stopped_early = true;
-          r.log_z_bound = bound;
-          return true;
-        };
-      const Model model = effect_model(candidates[i], likelihood);
-      const NestedRun run =
-          run_nested_sampling(model, sampler, [&](const NestedStatus& s) { status.running(candidates[i], s); }, stop);
-      take_run(run, model, candidates[i], r);
-    });
+  const auto by_sampling = [&](std::size_t i, EffectResult& r, const NestedProgressFn& status) {
+    r.method = "nested_sampling";
+    NestedSettings sampler = settings.sampler;
+    sampler.seed = Comparison::job_seed(settings.sampler.seed, streams[i]);
+    NestedStopFn stop;
+    if (settings.early_stop_deciban > 0.0)
+      stop = [&](const NestedStatus& s) {
+        if (!early_stop_allowed(s, sampler.live)) return false;
+        const double bound = early_stop_bound(s);
+        if (deciban(bound, leader.wait()) >= -settings.early_stop_deciban) return false;
+        r.stopped_early = true;
+        r.log_z_bound = bound;
+        return true;
+      };
+    const Model model = effect_model(candidates[i], likelihood);
+    take_run(run_nested_sampling(model, sampler, status, stop), model, candidates[i], r);
   };
-  const std::vector<std::size_t> queue = schedule(candidates, likelihood, cheap, sampled, settings.threads);
-  run_in_parallel(queue, settings.threads, [&](std::size_t i) {
-    const bool quadrature = std::find(cheap.begin(), cheap.end(), i) != cheap.end();
-    quadrature ? by_quadrature(i) : by_sampling(i);
-  });
-  progress.finish();
+  // The work of a candidate for the time left: a quadrature candidate counts 1, a sampled one 10 per parameter.
+  std::vector<ComparisonJob> jobs;
+  for (const auto& c : candidates)
+    jobs.push_back({c.label(), c.priors.size() <= 1 ? 1.0 : 10.0 * static_cast<double>(c.priors.size()),
+                    settings.sampler.dlogz});
+  Comparison comparison(progress, settings.threads, "candidates");
+  const std::vector<TaskTime> times = comparison.run(
+      jobs, schedule(candidates, likelihood, cheap, sampled, settings.threads),
+      [&](std::size_t i, const NestedProgressFn& status) {
+        results[i] = start_result(candidates[i]);
+        if (std::find(cheap.begin(), cheap.end(), i) != cheap.end()) by_quadrature(i, results[i]);
+        else by_sampling(i, results[i], status);
+      });
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    results[i].seconds = times[i].seconds;
+    results[i].cpu_seconds = times[i].cpu_seconds;
+  }
   return results;
 }
 

@@ -10,17 +10,17 @@
 #include "emit/emit.hpp"
 #include "io/bands_file.hpp"
 #include "io/fit_file.hpp"
+#include "inference/comparison.hpp"
 #include "io/unit_file.hpp"
 #include "library/exports.hpp"
 #include "library/fit_directory.hpp"
+#include "selection/fit_cost.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <map>
-#include <mutex>
 
 namespace admitgen::library {
 namespace fs = std::filesystem;
@@ -88,21 +88,30 @@ std::size_t run_units(const Library& library, const std::vector<WorkUnit>& units
       const Material& m = library.materials[units[i].material];
       data.emplace(units[i].material, read_data(m));
     }
-  std::mutex mutex;
-  std::size_t done = 0;
-  run_in_parallel(queue, threads, [&](std::size_t i) {
-    const WorkUnit& u = units[i];
-    const Material& m = library.materials[u.material];
-    io::UnitResult result{u.key, fit_order(data.at(u.material), u.order, m.fit)};
-    ensure_writable_directory(fs::path(u.path).parent_path().string());
-    write_file_atomically(u.path, io::unit_text(result));
-    std::lock_guard<std::mutex> lock(mutex);
-    ++done;
-    progress.message(fmt::format("  {:<32} ln Z = {:10.2f} ± {:.2f}  ({:.1f} s)", u.id, result.model.run.log_z,
-                                 result.model.run.log_z_error, result.model.seconds));
-    progress.update(fmt::format("[{}/{} units]", done, queue.size()));
-  });
-  progress.finish();
+  // The units on the comparison driver (inference/comparison.hpp), each at the work a fit expects of its order.
+  std::vector<ComparisonJob> jobs;
+  for (const WorkUnit& u : units) {
+    const FitSettings& fit = library.materials[u.material].fit;
+    jobs.push_back({u.id, (1.0 + u.order.q() + u.order.s()) * expected_evaluations(u.order, fit, fit.sampler.live),
+                    fit.sampler.dlogz});
+  }
+  std::vector<double> log_z(units.size()), error(units.size());
+  Comparison comparison(progress, threads, "units");
+  comparison.run(
+      jobs, queue,
+      [&](std::size_t i, const NestedProgressFn& status) {
+        const WorkUnit& u = units[i];
+        const Material& m = library.materials[u.material];
+        io::UnitResult result{u.key, fit_order(data.at(u.material), u.order, m.fit, status)};
+        ensure_writable_directory(fs::path(u.path).parent_path().string());
+        write_file_atomically(u.path, io::unit_text(result));
+        log_z[i] = result.model.run.log_z;
+        error[i] = result.model.run.log_z_error;
+      },
+      [&](std::size_t i, const TaskTime& time) {
+        return fmt::format("  {:<32} ln Z = {:10.2f} ± {:.2f}  ({:.1f} s)", units[i].id, log_z[i], error[i],
+                           time.seconds);
+      });
   return queue.size();
 }
 

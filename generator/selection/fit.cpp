@@ -3,19 +3,18 @@
 
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
+#include "inference/comparison.hpp"
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
+#include "selection/fit_cost.hpp"
 #include "selection/grid_growth.hpp"
 #include "selection/reduced_model.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
-#include <mutex>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -23,7 +22,8 @@
 namespace admitgen {
 
 std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
-  return derive_seed(user_seed, static_cast<std::uint64_t>(order.q()) * 1000u + static_cast<std::uint64_t>(order.s()));
+  return Comparison::job_seed(user_seed,
+                              static_cast<std::uint64_t>(order.q()) * 1000u + static_cast<std::uint64_t>(order.s()));
 }
 
 SamplerKind parse_sampler_kind(const std::string& text) {
@@ -93,22 +93,32 @@ FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
   return settings;
 }
 
-ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& given,
+namespace {
+
+/// fit_order without its timing: what the comparison driver runs (and times) for each order of a fit.
+ModelResult run_order(const Measurement& data, const Order& order, const FitSettings& given,
                       const NestedProgressFn& progress, int round) {
   const FitSettings settings = with_band_priors(given, data);
-  const auto start = std::chrono::steady_clock::now();
-  const double cpu_start = thread_cpu_seconds();
   std::string note;
   ModelResult result = order_sampler(settings, &note) == SamplerKind::poles
                            ? run_poles(data, order, settings, progress, round)
                            : run_full(data, order, settings, progress, round);
   result.sampler_note = note;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.cpu_seconds = thread_cpu_seconds() - cpu_start;
   for (std::size_t i = 0; i < result.run.size(); ++i)
     fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
   result.parameters = summarize(result.run, order.parameter_names());
   return result;
+}
+
+}  // namespace
+
+ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
+                      const NestedProgressFn& progress, int round) {
+  std::optional<ModelResult> result;
+  const TaskTime time = timed([&] { result.emplace(run_order(data, order, settings, progress, round)); });
+  result->seconds = time.seconds;
+  result->cpu_seconds = time.cpu_seconds;
+  return std::move(*result);
 }
 
 PredictiveBand predictive_band(const Measurement& data, const ModelResult& model, int draws, std::uint64_t seed) {
@@ -147,36 +157,6 @@ PredictiveBand predictive_band(const Measurement& data, const ModelResult& model
 }
 
 namespace {
-
-/// Status line shared by the workers: one entry per order currently running.
-class GridProgress {
- public:
-  GridProgress(Progress& out, std::size_t total) : out_(out), total_(total) {}
-  void running(const Order& o, const NestedStatus& s) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    active_[o.name()] = fmt::format("{} it {} lnZ {:.1f} (Δ {:.2g})", o.name(), s.iteration, s.log_z, s.remaining);
-    show();
-  }
-  void done(const ModelResult& m) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    active_.erase(m.order.name());
-    ++done_;
-    out_.message(fmt::format("  {:<5} ln Z = {:10.2f} ± {:.2f}  ({} calls, {:.1f} s)", m.order.name(), m.run.log_z,
-                             m.run.log_z_error, m.run.calls, m.seconds));
-    show();
-  }
-
- private:
-  void show() {
-    std::string line = fmt::format("[{}/{} orders]", done_, total_);
-    for (const auto& [name, text] : active_) line += "  " + text;
-    out_.update(line);
-  }
-  Progress& out_;
-  std::size_t total_, done_ = 0;
-  std::mutex mutex_;
-  std::map<std::string, std::string> active_;
-};
 
 /// The largest order of the grid (Q = qmax, S = smax) must have fewer parameters than real data.
 void check_constrainable(const Measurement& data, const FitSettings& settings) {
@@ -322,20 +302,35 @@ std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
 
 namespace {
 
-/// Runs the orders grid[i] for i in `which` on a pool of workers, largest first, writing results[i]; order i
-/// runs with 2^round[i] times the live points and that round's seed stream.
+/// Runs the orders grid[i] for i in `which` on the comparison driver (inference/comparison.hpp), largest first,
+/// writing results[i]; order i runs with 2^round[i] times the live points and that round's seed stream.
 void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
                 const std::vector<std::size_t>& which, const std::vector<int>& round,
                 std::vector<ModelResult>& results, Progress& progress) {
   std::vector<std::size_t> queue = which;
   std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
-  GridProgress status(progress, queue.size());
-  run_in_parallel(queue, settings.threads, [&](std::size_t i) {
-    const Order& order = grid[i];
-    results[i] = fit_order(data, order, settings, [&](const NestedStatus& s) { status.running(order, s); }, round[i]);
-    status.done(results[i]);
-  });
-  progress.finish();  // (on an exception, Progress's destructor clears the line)
+  std::vector<ComparisonJob> jobs;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    const Order& o = grid[i];
+    const double per_call = 1.0 + o.q() + o.s();  // a likelihood call costs in proportion (fit_cost.hpp)
+    jobs.push_back({o.name(), per_call * expected_evaluations(o, settings, settings.sampler.live << round[i]),
+                    settings.sampler.dlogz});
+  }
+  Comparison comparison(progress, settings.threads, "orders");
+  const auto times = comparison.run(
+      jobs, queue,
+      [&](std::size_t i, const NestedProgressFn& status) {
+        results[i] = run_order(data, grid[i], settings, status, round[i]);
+      },
+      [&](std::size_t i, const TaskTime& time) {
+        const ModelResult& m = results[i];
+        return fmt::format("  {:<5} ln Z = {:10.2f} ± {:.2f}  ({} calls, {:.1f} s)", m.order.name(), m.run.log_z,
+                           m.run.log_z_error, m.run.calls, time.seconds);
+      });
+  for (std::size_t i : queue) {
+    results[i].seconds = times[i].seconds;
+    results[i].cpu_seconds = times[i].cpu_seconds;
+  }
 }
 
 /// Re-runs orders that missed a mode (missed_modes), in rounds r = 1 … missed_mode_retries with 2^r times the

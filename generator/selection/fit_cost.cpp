@@ -65,20 +65,22 @@ std::string duration(double seconds) {
 
 }  // namespace
 
+double expected_evaluations(const Order& order, const FitSettings& settings, int live) {
+  const bool poles = order_sampler(settings) == SamplerKind::poles;
+  const double dim = poles ? pole_count(order) : order.dim();
+  const double slices = settings.sampler.slices > 0 ? settings.sampler.slices : 3.0 + dim;
+  return (poles ? kPoleEvaluationsPerLiveDimSlice : kEvaluationsPerLiveDimSlice) * live * dim * slices;
+}
+
 FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& settings) {
   FitCostEstimate e;
   e.points = static_cast<long>(data.size());
-  const bool poles = order_sampler(settings) == SamplerKind::poles;
   const Order largest(settings.qmax, settings.smax);
   e.seconds_per_evaluation = seconds_per_evaluation(data, largest, settings);
   const double largest_terms = 1.0 + settings.qmax + settings.smax;
   for (int q = 0; q <= settings.qmax; ++q)
     for (int s = 0; s <= settings.smax; ++s) {
-      const Order order(q, s);
-      const double dim = poles ? pole_count(order) : order.dim();
-      const double slices = settings.sampler.slices > 0 ? settings.sampler.slices : 3.0 + dim;
-      const double evaluations =
-          (poles ? kPoleEvaluationsPerLiveDimSlice : kEvaluationsPerLiveDimSlice) * settings.sampler.live * dim * slices;
+      const double evaluations = expected_evaluations(Order(q, s), settings, settings.sampler.live);
       e.evaluations += evaluations;
       const double seconds = evaluations * e.seconds_per_evaluation * (1.0 + q + s) / largest_terms;
       e.cpu_seconds += seconds;

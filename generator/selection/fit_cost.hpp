@@ -34,6 +34,9 @@ struct FitCostEstimate {
   std::string describe() const;
 };
 
+/// Likelihood evaluations that one order is expected to take at `live` live points (the model above).
+double expected_evaluations(const Order& order, const FitSettings& settings, int live);
+
 /// Times the largest order's likelihood on `data` (a few evaluations, at least 20 ms) and applies the
 /// model above.
 FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& settings);
