@@ -51,13 +51,18 @@ double log_residue_box_volume(const Order& order, const PriorRanges& ranges) {
 PoleTransform::PoleTransform(const Order& order, const PriorRanges& ranges, bool reduce_symmetry)
     : full_(order, ranges, reduce_symmetry),
       indices_(pole_indices(order)),
-      u_full_(static_cast<std::size_t>(order.dim()), 0.5),
-      theta_full_(static_cast<std::size_t>(order.dim())) {}
+      u_full_(static_cast<std::size_t>(order.dim()), 0.5) {
+  const auto families = order.families();
+  for (int i : indices_) {
+    const Range& r = ranges.of(families[static_cast<std::size_t>(i)]);
+    lo_.push_back(r.lo);
+    width_.push_back(r.width());
+  }
+}
 
 void PoleTransform::operator()(const double* u, double* poles) const {
-  for (std::size_t k = 0; k < indices_.size(); ++k) u_full_[static_cast<std::size_t>(indices_[k])] = u[k];
-  full_(u_full_.data(), theta_full_.data());
-  for (std::size_t k = 0; k < indices_.size(); ++k) poles[k] = theta_full_[static_cast<std::size_t>(indices_[k])];
+  // PriorTransform's map of each pole coordinate (uniform over its range), without its residues.
+  for (std::size_t k = 0; k < indices_.size(); ++k) poles[k] = lo_[k] + width_[k] * u[k];
 }
 
 void PoleTransform::fold(double* u) const {

@@ -42,9 +42,10 @@ class PoleTransform {
   int dim() const { return static_cast<int>(indices_.size()); }
 
  private:
-  PriorTransform full_;
+  PriorTransform full_;  ///< for its fold
   std::vector<int> indices_;
-  mutable std::vector<double> u_full_, theta_full_;
+  std::vector<double> lo_, width_;  ///< of each pole coordinate's range
+  mutable std::vector<double> u_full_;
 };
 
 }  // namespace admitgen
