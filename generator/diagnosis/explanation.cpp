@@ -247,7 +247,7 @@ std::vector<ParameterSummary> Explanation::member_parameters(std::size_t k,
           joint.parameters.begin() + static_cast<std::ptrdiff_t>(offset + n)};
 }
 
-std::vector<double> member_shares(const std::vector<EffectCandidate>& candidates, const std::vector<std::size_t>& members,
+MemberShares member_shares(const std::vector<EffectCandidate>& candidates, const std::vector<std::size_t>& members,
                                   const std::vector<double>& theta, const Eigen::ArrayXcd& y_real,
                                   const Eigen::ArrayXcd& y_sim) {
   const std::size_t m = members.size();
@@ -277,14 +277,16 @@ std::vector<double> member_shares(const std::vector<EffectCandidate>& candidates
     for (std::size_t i = 1; i <= m - s - 1; ++i) weight[s] *= static_cast<double>(i);
     for (std::size_t i = 1; i <= m; ++i) weight[s] /= static_cast<double>(i);
   }
-  std::vector<double> out(m, 0.0);
-  for (std::size_t k = 0; k < m; ++k)
+  MemberShares out{std::vector<double>(m, 0.0), std::vector<double>(m, 0.0)};
+  for (std::size_t k = 0; k < m; ++k) {
+    out.alone[k] = v[std::size_t{1} << k] / g0;
     for (std::size_t mask = 0; mask < v.size(); ++mask) {
       if (mask >> k & 1u) continue;
       std::size_t size = 0;
       for (std::size_t b = mask; b; b >>= 1) size += b & 1u;
-      out[k] += weight[size] * (v[mask | std::size_t{1} << k] - v[mask]) / g0;
+      out.shapley[k] += weight[size] * (v[mask | std::size_t{1} << k] - v[mask]) / g0;
     }
+  }
   return out;
 }
 

@@ -37,6 +37,8 @@
 /// (composed as combine_effects composes them) and v(S) = G(∅) − G(S), member k's share is its Shapley
 /// value  φ_k = Σ_{S ⊆ M∖k} |S|! (m − |S| − 1)! / m! · (v(S ∪ k) − v(S)),  divided by G(∅): the shares
 /// add up to the explained fraction of the whole explanation and do not depend on the members' order.
+/// Beside it, what member k explains alone at the same parameters, v({k})/G(∅): where members partly cancel, a
+/// Shapley share can exceed 1 while the member alone explains little or makes the gap worse.
 #pragma once
 
 #include "diagnosis/effect_identification.hpp"
@@ -50,8 +52,16 @@ namespace admitgen::diagnosis {
 inline constexpr std::size_t kMaxExplanationEffects = 3;
 /// Addition rounds at most: each round adds one member, the backward step may take members out again.
 inline constexpr std::size_t kMaxExplanationRounds = 2 * kMaxExplanationEffects;
-/// A member whose share of the squared gap is at least this is the main cause (verdict.hpp).
+/// A member whose share of the squared gap is at least this, and which alone explains at least this
+/// fraction of it, is the main cause (verdict.hpp).
 inline constexpr double kMainCauseShare = 0.5;
+
+/// Each member's share of the squared gap (the Shapley value above over G(∅)) and the fraction it explains
+/// alone (v({k})/G(∅)), in the members' order.
+struct MemberShares {
+  std::vector<double> shapley;
+  std::vector<double> alone;
+};
 
 struct ExplanationStep {
   std::size_t candidate = 0;          ///< index into the candidates
@@ -70,8 +80,8 @@ struct DroppedMember {
 
 struct Explanation {
   std::vector<ExplanationStep> steps;  ///< in the order accepted; empty when no single effect is decisive
-  /// Each step's share of the squared gap (Shapley value above over G(∅)), in step order; empty with the steps.
-  std::vector<double> shares;
+  /// Each step's share of the squared gap and what it explains alone (above), in step order; empty with the steps.
+  MemberShares shares;
   std::vector<DroppedMember> dropped;  ///< in the order dropped
   /// The accepted members fitted jointly; priors and parameters concatenated in step order (gap fields
   /// and Bayes factor against no effect filled). Meaningless when steps is empty.
@@ -90,7 +100,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
 
 /// The shares above of `members` (candidate indices) at the parameters theta (concatenated in the
 /// members' order), against y_real; y_sim is the prediction of no member. One per member, in its order.
-std::vector<double> member_shares(const std::vector<EffectCandidate>& candidates, const std::vector<std::size_t>& members,
+MemberShares member_shares(const std::vector<EffectCandidate>& candidates, const std::vector<std::size_t>& members,
                                   const std::vector<double>& theta, const Eigen::ArrayXcd& y_real,
                                   const Eigen::ArrayXcd& y_sim);
 

@@ -33,10 +33,15 @@ Verdict decide(const Gap& gap, const Identification& id, const Explanation& expl
     m.parameters.insert(m.parameters.end(), c.fixed.begin(), c.fixed.end());
     v.explanation.push_back(m);
   }
-  for (std::size_t k = 0; k < explanation.shares.size(); ++k) v.shares.push_back({k, explanation.shares[k]});
+  const MemberShares& shares = explanation.shares;
+  for (std::size_t k = 0; k < shares.shapley.size(); ++k) v.shares.push_back({k, shares.shapley[k]});
   std::stable_sort(v.shares.begin(), v.shares.end(),
                    [](const VerdictShare& a, const VerdictShare& b) { return a.share > b.share; });
-  if (!v.shares.empty() && v.shares.front().share >= kMainCauseShare) v.main_cause = v.shares.front();
+  // The largest share, when the member also explains that much alone: a share above ½ that partner members
+  // cancel (their shares negative) says the members are entangled, not that this one carries the gap.
+  if (!v.shares.empty() && v.shares.front().share >= kMainCauseShare &&
+      shares.alone[v.shares.front().member] >= kMainCauseShare)
+    v.main_cause = v.shares.front();
   for (const auto& d : explanation.dropped) {
     const EffectCandidate& c = candidates[d.candidate];
     v.dropped.push_back({c.name, c.name == "material" ? c.priors.front().name : std::string(), d.bayes_factor_deciban});
@@ -62,7 +67,8 @@ std::string describe_decision_rule() {
       "structure is left) and a backward step after each addition (a "
       "member is dropped when the explanation with it is less than {0:g} deciban better than the one without it: "
       "within the decision margin the explanation with fewer parameters is kept); members listed by their share of "
-      "the squared gap, the main cause named when its share is at least {2:g}",
+      "the squared gap, the main cause named when its share is at least {2:g} and it alone explains at least {2:g} of "
+      "the squared gap",
       kDecisiveDeciban, kMaxExplanationEffects, kMainCauseShare);
 }
 

@@ -23,8 +23,8 @@
 /// white, so an effect can be decisively better than none and still explain little; `explained` and
 /// `white_after` say how much is left.
 /// Main cause (docs/diagnosis.md, "Main cause"): the members are listed by their share of the squared
-/// gap (explanation.hpp member_shares), largest first; the member whose share is at least kMainCauseShare
-/// is the main cause, named also when the verdict is unexplained ("main cause X (share), structure
+/// gap (explanation.hpp member_shares), largest first; the member whose share is at least kMainCauseShare,
+/// and which alone explains at least that fraction of the squared gap, is the main cause, named also when the verdict is unexplained ("main cause X (share), structure
 /// left"): most of the gap is that effect even though something outside the vocabulary is left.
 /// Members the backward step of the search dropped are listed with their Bayes factor (the explanation
 /// with them was within the decision margin of the one without, which has fewer parameters).
@@ -69,7 +69,7 @@ struct Verdict {
   std::string effect = "none";  ///< e*, none or unexplained
   std::vector<VerdictMember> explanation;
   std::vector<VerdictShare> shares;  ///< one per member, largest share first (ties: explanation order)
-  std::optional<VerdictShare> main_cause;  ///< the first of shares when its share ≥ kMainCauseShare
+  std::optional<VerdictShare> main_cause;  ///< the first of shares when it and its member alone reach kMainCauseShare
   std::vector<VerdictDropped> dropped;
   double bayes_factor_deciban = 0.0;  ///< of e* (also when the verdict is none)
   double margin_deciban = 0.0;        ///< BF(e*) − BF(runner-up); +inf when there is no runner-up

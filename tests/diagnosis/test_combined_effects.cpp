@@ -177,8 +177,10 @@ TEST_CASE("member shares are the Shapley values of the squared gap, adding up to
       indices.push_back(static_cast<std::size_t>(at - s.all.begin()));
       theta.insert(theta.end(), members[k].theta.begin(), members[k].theta.end());
     }
-    const std::vector<double> shares = diagnosis::member_shares(s.all, indices, theta, y_real, y_sim);
+    const diagnosis::MemberShares computed = diagnosis::member_shares(s.all, indices, theta, y_real, y_sim);
+    const std::vector<double>& shares = computed.shapley;
     REQUIRE(shares.size() == m);
+    REQUIRE(computed.alone.size() == m);
     // v(S) from synth for the subset S (bit k: member k).
     const auto v = [&](std::size_t mask) {
       std::vector<std::string> effects;
@@ -204,6 +206,8 @@ TEST_CASE("member shares are the Shapley values of the squared gap, adding up to
       CAPTURE(m);
       CAPTURE(k);
       CHECK(std::abs(shares[k] - reference[k] / orders / g0) <= tolerance);
+      // What member k explains alone: v({k}) over G(∅), from synth's output of that member only.
+      CHECK(std::abs(computed.alone[k] - v(std::size_t{1} << k) / g0) <= tolerance);
       sum += shares[k];
     }
     // Efficiency: the shares add up to the fraction of the squared gap all members together explain.

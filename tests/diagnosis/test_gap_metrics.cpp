@@ -108,4 +108,35 @@ TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none, unexplained whe
   CHECK(decide(gap, Identification{}, Explanation{}, candidates).effect == "unexplained");
 }
 
+TEST_CASE("verdict: the main cause has the largest share and explains at least half of the squared gap alone") {
+  // Two members, shares and alone fractions set by hand (member_shares computes them; tested against synth
+  // in test_combined_effects.cpp): the rule is what is tested here. A share of 1.2 beside −0.3 is two members
+  // that partly cancel; the first alone explains 0.1 of the squared gap, so it is not the main cause.
+  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
+  const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
+  const Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
+  std::vector<EffectCandidate> candidates(2);
+  candidates[0].name = "air_gap";
+  candidates[1].name = "edge_gap";
+  Identification id;
+  EffectResult best;
+  best.name = "air_gap";
+  best.bayes_factor_deciban = 40.0;
+  id.effects = {best};
+  Explanation e;
+  e.steps = {{0, 40.0, 2.0}, {1, 30.0, 1.5}};
+  e.joint.gap_after = measure_gap(f, y, y * 1.01, rms_level(y));  // structure left
+  e.shares = {{1.2, -0.3}, {0.1, 0.05}};
+  CHECK_FALSE(decide(gap, id, e, candidates).main_cause);
+  // The same share with the member alone explaining 0.5: the main cause, named although structure is left.
+  e.shares.alone = {0.5, 0.05};
+  const Verdict v = decide(gap, id, e, candidates);
+  REQUIRE(v.main_cause);
+  CHECK(v.main_cause->member == 0);
+  CHECK(main_cause_text(v) == "main cause air_gap (1.20), structure left");
+  // A largest share below one half: none, however much the member explains alone.
+  e.shares = {{0.45, 0.45}, {0.9, 0.9}};
+  CHECK_FALSE(decide(gap, id, e, candidates).main_cause);
+}
+
 }  // namespace admitgen::test
