@@ -4,6 +4,7 @@
 // field list, in order, with the same marks; the round trips are tests/io/test_record_files.cpp and
 // tests/library/test_library.cpp.
 #include "io/bands_file.hpp"
+#include "io/check_report.hpp"
 #include "io/diagnosis_file.hpp"
 #include "io/fit_file.hpp"
 #include "io/key_table.hpp"
@@ -103,4 +104,27 @@ TEST_CASE("key table: objects get rows of their own, marks say optional, arrays 
   CHECK(rows[1] == std::make_pair(std::string("b"), std::string("`c`")));
   CHECK(rows[2] == std::make_pair(std::string("d[]"), std::string("`e`? {name: …}")));
   CHECK(rows[3] == std::make_pair(std::string("f{}"), std::string("`g` or null")));
+}
+
+/// Every key of `keys` and of the objects under them, in backticks.
+void collect_keys(const std::vector<io::KeyNode>& keys, std::vector<std::string>& out) {
+  for (const auto& k : keys) {
+    out.push_back("`" + k.key + "`");
+    collect_keys(k.children, out);
+  }
+}
+
+TEST_CASE("docs/formats.md: the check report's key table and details rows name the field lists' keys") {
+  check_table("## check report (`admitgen.check/1`)", io::check_report_keys());
+  // The details differ per check: its row of the details table names every key of its record.
+  const std::string doc = read_text(sample("..") + "/docs/" + "formats.md");
+  for (const auto& [check, keys] : io::check_details_keys()) {
+    CAPTURE(check);
+    const auto row = doc.find("| `" + check + "` | ");
+    REQUIRE(row != std::string::npos);
+    const std::string line = doc.substr(row, doc.find('\n', row) - row);
+    std::vector<std::string> names;
+    collect_keys(keys, names);
+    for (const auto& name : names) CHECK_MESSAGE(line.find(name) != std::string::npos, name << " in " << line);
+  }
 }
