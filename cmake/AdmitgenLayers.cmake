@@ -29,8 +29,14 @@
 #       default build: the CLI's). Build cost: docs/building.md, "Where build time goes".
 #
 #   admitgen_link_as_layer_source(<target> <layer> <suffix>)   (build only)
-#       Links <target> as if its sources were sources of <layer>: the layer's library and its private
-#       layers (the tests' probes of tests/layers/).
+#       Links <target> as if its sources were sources of <layer>: the layer's library, its private
+#       layers and admitgen_layer_json (the tests' probes of tests/layers/).
+#
+#   admitgen_layer_json(<target> <layer>)   (build only)
+#       nlohmann_json is the io layer's alone (docs/architecture.md, "JSON only in io"): a source of io
+#       links it (PRIVATE), a source of any other layer finds cmake/json_outside_io/nlohmann/json.hpp first,
+#       whose #error stops the compilation (the system's header, in a default include directory, would
+#       otherwise resolve in any target). What links the aggregate (tests) gets neither.
 include_guard(GLOBAL)
 
 function(admitgen_read_layers table source_dir)
@@ -136,8 +142,11 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
         list(APPEND public_targets ${private_targets})
       endif()
       target_include_directories(${target} ${usage} ${include_root}/${layer} ${ADMITGEN_LAYER_${layer}_EXTRA_INCLUDES})
-      target_link_libraries(${target} ${usage} ${flags} ${public_targets} Eigen3::Eigen nlohmann_json::nlohmann_json fmt::fmt
+      target_link_libraries(${target} ${usage} ${flags} ${public_targets} Eigen3::Eigen fmt::fmt
                                                OpenSSL::Crypto Threads::Threads ${ADMITGEN_LAYER_${layer}_EXTRA_LIBS})
+      if(sources)
+        admitgen_layer_json(${target} ${layer})
+      endif()
       target_link_libraries(${aggregate} INTERFACE ${target})
     endforeach()
   endfunction()
@@ -145,5 +154,14 @@ if(NOT CMAKE_SCRIPT_MODE_FILE)
   function(admitgen_link_as_layer_source target layer suffix)
     admitgen_layer_targets(private_targets "${suffix}" ${ADMITGEN_LAYER_${layer}_PRIVATE})
     target_link_libraries(${target} PRIVATE admitgen_layer_${layer}${suffix} ${private_targets})
+    admitgen_layer_json(${target} ${layer})
+  endfunction()
+
+  function(admitgen_layer_json target layer)
+    if(layer STREQUAL "io")
+      target_link_libraries(${target} PRIVATE nlohmann_json::nlohmann_json)
+    else()
+      target_include_directories(${target} BEFORE PRIVATE ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/json_outside_io)
+    endif()
   endfunction()
 endif()

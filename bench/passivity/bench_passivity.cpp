@@ -12,7 +12,9 @@
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "emit/emit.hpp"
+#include "io/check_input.hpp"
 #include "io/fit_file.hpp"
+#include "io/model_block.hpp"
 #include "selection/fit_record.hpp"
 #include "selection/fit.hpp"
 
@@ -68,8 +70,8 @@ void run(const std::string& label, const std::string& path, const std::string& c
     // Plain: the same estimate and checks, least-squares refit without passivity constraints.
     t = Clock::now();
     const auto e = codegen::prepare_emission(json, "fit.json", s);
-    const auto header = codegen::render_header(e, tpl, "wall.h");
-    plain_safe += checks::run_checks(checks::subject_from_header(header, "wall.h")).passed();
+    const auto header = io::header_text(e, tpl, "wall.h");
+    plain_safe += checks::run_checks(io::header_subject(header, "wall.h")).passed();
     plain_s += seconds_since(t);
     ++total;
   }

@@ -34,8 +34,10 @@ struct CheckSubject {
   std::string note;  ///< e.g. which estimate was checked when the requested one is absent
 };
 
-/// From an emitted header's text (throws InputError if it has no readable admitgen:model block).
-CheckSubject subject_from_header(const std::string& text, const std::string& origin);
+/// From an emitted header: its model block as read (io::read_emitted_header) and its text, whose C tables
+/// header_integrity compares with the block (io::header_subject reads both from the text).
+CheckSubject subject_from_header(const codegen::EmittedHeader& header, const std::string& text,
+                                 const std::string& origin);
 /// From a fit: the selected order, or `order`, and the estimate (a fit without a passive
 /// estimate, written by an older admitgen, is checked at its posterior mean, and `note` says so).
 CheckSubject subject_from_fit(const FitRecord& fit, const std::string& origin, const std::string& order,

@@ -2,6 +2,7 @@
 #include "checks/check_suite.hpp"
 
 #include "codegen/runtime_filter.hpp"
+#include "core/text.hpp"
 
 #include <fmt/format.h>
 
@@ -12,6 +13,8 @@
 
 namespace admitgen::checks {
 namespace {
+
+constexpr std::string_view kBlanks = " \t\r\n";  // between the tokens of a C initialiser
 
 /// The comma-separated initialiser tokens of `static const TYPE NAME[...] = { ... };` or
 /// `static const TYPE NAME = { ... };` (comments removed), or nothing if the declaration is absent.
@@ -36,9 +39,8 @@ std::optional<std::vector<std::string>> initialiser(const std::string& text, con
   std::size_t start = 0;
   for (std::size_t i = 0; i <= body.size(); ++i)
     if (i == body.size() || body[i] == ',') {
-      std::string t = body.substr(start, i - start);
-      const auto b = t.find_first_not_of(" \t\r\n"), e = t.find_last_not_of(" \t\r\n");
-      if (b != std::string::npos) tokens.push_back(t.substr(b, e - b + 1));
+      const auto t = trim(std::string_view(body).substr(start, i - start), kBlanks);
+      if (!t.empty()) tokens.emplace_back(t);
       start = i + 1;
     }
   return tokens;
@@ -87,9 +89,7 @@ void compare_fields(CheckResult& r, const std::string& text, const std::string& 
   for (const auto& t : *tokens) {
     const std::size_t close = t.find(')');
     if (t.compare(0, tag.size(), tag) != 0 || close == std::string::npos) continue;
-    const std::string value = t.substr(close + 1);
-    const std::size_t b = value.find_first_not_of(" \t\r\n");
-    fields[t.substr(tag.size(), close - tag.size())] = b == std::string::npos ? "" : value.substr(b);
+    fields[t.substr(tag.size(), close - tag.size())] = trim(std::string_view(t).substr(close + 1), kBlanks);
   }
   for (const auto& [field, value, is_float] : expected) {
     const auto it = fields.find(field);

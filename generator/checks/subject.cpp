@@ -10,11 +10,12 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-CheckSubject subject_from_header(const std::string& text, const std::string& origin) {
+CheckSubject subject_from_header(const codegen::EmittedHeader& header, const std::string& text,
+                                 const std::string& origin) {
   CheckSubject s;
   s.origin = origin;
   s.kind = "header";
-  s.header = codegen::read_emitted_header(text, origin);
+  s.header = header;
   s.surface = s.header->surface;
   s.data_f_min_hz = s.header->data_f_min_hz;
   s.data_f_max_hz = s.header->data_f_max_hz;

@@ -2,8 +2,8 @@
 /// @file
 /// `admitgen emit` as a library: a fit's record (model/fit_record.hpp) → discrete models per sample
 /// rate → quantised tables → the generated C header (templates/admitgen_boundary.h.in), band
-/// absorption, golden vectors, and the writer and reader of a header's model block (what `admitgen
-/// check` verifies; docs/formats.md).
+/// absorption, golden vectors, and EmittedHeader, the typed record of a header's model block (what
+/// `admitgen check` verifies). The block's JSON writer and reader are io/model_block.hpp (docs/formats.md).
 #pragma once
 
 #include "codegen/band_absorption.hpp"
@@ -21,9 +21,6 @@ namespace admitgen::codegen {
 
 /// Runtime ABI the generated headers are written for (must equal ADMITGEN_RT_ABI_VERSION).
 inline constexpr int kRuntimeAbi = 1;
-
-/// Schema identifier of a header's model block (model_block, read_emitted_header).
-inline constexpr const char* kModelBlockSchema = "admitgen.emit/1";
 
 struct EmitSettings {
   std::vector<double> fs_hz;
@@ -89,21 +86,16 @@ Emission prepare_emission(const EmissionSource& source, const EmitSettings& sett
 Emission prepare_emission(const FitRecord& fit, const std::string& fit_path, const EmitSettings& settings);
 
 /// The header text from the template text (deterministic: no timestamp; byte-identical on re-run).
-std::string render_header(const Emission& emission, const std::string& template_text, const std::string& file_name);
-
-/// The header's model block (docs/formats.md, "The header's machine-readable block"): the machine-readable description of
-/// exactly what the header emits, schema "admitgen.emit/1", as one line of JSON; the header carries it
-/// between "admitgen:model" and "admitgen:end" markers. Its one writer; read_emitted_header is its one
-/// reader. (Both stay beside the header template: emit checks the header it renders before writing it,
-/// so the library needs them, not only the command line.)
-std::string model_block(const Emission& emission);
+/// `model_block` is the header's machine-readable block, one line of JSON carried between "admitgen:model"
+/// and "admitgen:end" (written by io::model_block; io::header_text renders a header with it).
+std::string render_header(const Emission& emission, const std::string& template_text, const std::string& file_name,
+                          const std::string& model_block);
 
 /// Bit-exact golden vectors of the first rate (q31/q15 only): impulse, worst-case sign, uniform noise at
 /// −6 dBFS from Rng(seed), zeros; input and expected output in decimal with a hex comment.
 std::string golden_vectors(const Emission& emission, std::uint64_t seed);
 
-/// What a header emitted: read back from its model block (throws InputError if absent or unreadable,
-/// naming the key and value).
+/// What a header emitted, as its model block states it (read by io::read_emitted_header).
 struct EmittedHeader {
   Format format = Format::f32;
   std::string name;
@@ -116,6 +108,5 @@ struct EmittedHeader {
   };
   std::vector<Rate> rates;
 };
-EmittedHeader read_emitted_header(const std::string& header_text, const std::string& origin);
 
 }  // namespace admitgen::codegen

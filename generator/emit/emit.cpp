@@ -4,6 +4,8 @@
 #include "checks/check_suite.hpp"
 #include "checks/passivity.hpp"
 #include "core/errors.hpp"
+#include "io/check_input.hpp"
+#include "io/model_block.hpp"
 #include "model/multipole.hpp"
 #include "model/multipole_surface.hpp"
 #include "model/passivity.hpp"
@@ -114,8 +116,8 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
     for (double margin : kMargins) {
       settings.passive_margin = margin;
       r.emission = codegen::prepare_emission(source, settings);
-      r.header = codegen::render_header(r.emission, template_text, header_file_name);
-      r.report = checks::run_checks(checks::subject_from_header(r.header, header_file_name));
+      r.header = io::header_text(r.emission, template_text, header_file_name);
+      r.report = checks::run_checks(io::header_subject(r.header, header_file_name));
       if (!settings.enforce_passivity || !discrete_passivity_failed(r.report)) return r;
     }
   }

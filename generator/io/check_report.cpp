@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "io/check_report.hpp"
 
-#include "io/json_fields.hpp"
+#include "io/record_fields.hpp"
 
 #include <fmt/format.h>
 
@@ -23,95 +23,159 @@ const char* status_text(Status status) {
   return "?";
 }
 
-const char* status_json(Status status) { return status == Status::fail ? "fail" : status_text(status); }
+/// The status as the JSON spells it.
+struct StatusName {
+  Json write(Status status) const { return status == Status::fail ? "fail" : status_text(status); }
+};
 
 /// A frequency that may be infinite (a band reaching infinite frequency): the number, or "inf".
-Json frequency(double hz) { return std::isinf(hz) ? Json("inf") : Json(hz); }
+struct Frequency {
+  Json write(double hz) const { return std::isinf(hz) ? Json("inf") : Json(hz); }
+};
 
-Json passivity_json(const checks::PassivityDetails& d) {
-  const PassivityResult& p = d.test;
-  Json bands = Json::array();
-  for (std::size_t i = 0; i < p.bands.size(); ++i) {
-    const NegativeBand& b = p.bands[i];
-    bands.push_back({{"f_lo_hz", b.lo}, {"f_hi_hz", frequency(b.hi)}, {"min_re", b.min_re}, {"at_hz", frequency(b.at)},
-                     {"where", checks::band_place_text(d.places.at(i))}});
+/// The negative bands of a passivity test, each with where it lies (`places[i]` for band i).
+struct NegativeBands {
+  const std::vector<checks::BandPlace>& places;
+  Json write(const std::vector<NegativeBand>& bands) const {
+    Json out = Json::array();
+    for (std::size_t i = 0; i < bands.size(); ++i) {
+      const NegativeBand& b = bands[i];
+      out.push_back({{"f_lo_hz", b.lo}, {"f_hi_hz", Frequency{}.write(b.hi)}, {"min_re", b.min_re},
+                     {"at_hz", Frequency{}.write(b.at)}, {"where", checks::band_place_text(places.at(i))}});
+    }
+    return out;
   }
-  return {{"passive", p.passive}, {"method", p.method}, {"crossings_hz", p.crossings}, {"negative_bands", bands},
-          {"min_re", p.min_re}, {"min_at_hz", frequency(p.min_at)}};
-}
+};
 
-/// Sets j[key] when the figure is there (a figure a rate does not have is left out).
-template <class T>
-void put(Json& j, const char* key, const std::optional<T>& value) {
-  if (value) j[key] = *value;
-}
+/// Why a rate's discrete passivity was not tested.
+struct Skipped {
+  Json write(const std::optional<checks::PassivityDetails>&) const { return "unstable (see discrete_stability)"; }
+};
 
-/// {"rates": [f(rate), ...]}.
-template <class Rate, class F>
-Json rates_json(const std::vector<Rate>& rates, F f) {
-  Json list = Json::array();
-  for (const auto& r : rates) list.push_back(f(r));
-  return {{"rates", list}};
-}
+/// The figures of one check: its details record, {} when the check did not apply and for header_integrity
+/// (admitgen.check/1 has no figures for it: its count of values compared is in the summary).
+struct Details {
+  Json write(const checks::CheckDetails& details) const {
+    return std::visit(
+        [](const auto& d) -> Json {
+          using D = std::decay_t<decltype(d)>;
+          if constexpr (std::is_same_v<D, std::monostate> || std::is_same_v<D, checks::HeaderIntegrityDetails>)
+            return Json::object();
+          else
+            return write_record(d);
+        },
+        details);
+  }
+};
 
-Json details_json(const checks::CheckDetails& details) {
-  return std::visit(
-      [](const auto& d) -> Json {
-        using D = std::decay_t<decltype(d)>;
-        if constexpr (std::is_same_v<D, checks::CausalityDetails>) {
-          return {{"slowest_rate_per_s", d.slowest_rate_per_s ? Json(*d.slowest_rate_per_s) : Json(nullptr)}};
-        } else if constexpr (std::is_same_v<D, checks::DiscreteStabilityDetails>) {
-          return rates_json(d.rates, [](const checks::StabilityRate& r) {
-            Json j{{"fs_hz", r.fs_hz}};
-            put(j, "min_margin", r.min_margin);
-            put(j, "slowest_time_constant_s", r.slowest_time_constant_s);
-            return j;
-          });
-        } else if constexpr (std::is_same_v<D, checks::PassivityDetails>) {
-          return passivity_json(d);
-        } else if constexpr (std::is_same_v<D, checks::DiscretePassivityDetails>) {
-          return rates_json(d.rates, [](const checks::DiscretePassivityRate& r) {
-            if (!r.passivity) return Json{{"fs_hz", r.fs_hz}, {"skipped", "unstable (see discrete_stability)"}};
-            Json j = passivity_json(*r.passivity);
-            j["fs_hz"] = r.fs_hz;
-            return j;
-          });
-        } else if constexpr (std::is_same_v<D, checks::HeadroomDetails>) {
-          return rates_json(d.rates, [](const checks::HeadroomRate& r) {
-            return Json{{"fs_hz", r.fs_hz}, {"max_state_l1", r.max_state_l1}, {"output_l1", r.output_l1},
-                        {"output_range", r.output_range}, {"output_table_mantissa_sum", r.output_table_mantissa_sum}};
-          });
-        } else if constexpr (std::is_same_v<D, checks::LimitCycleDetails>) {
-          return rates_json(d.rates, [](const checks::LimitCycleRate& r) {
-            Json j{{"fs_hz", r.fs_hz}};
-            put(j, "zero_decay_bound", r.zero_decay_bound);
-            put(j, "simulated_samples", r.simulated_samples);
-            return j;
-          });
-        } else {
-          // Not applicable, and header_integrity: admitgen.check/1 has no figures for them (its count of
-          // values compared is in the summary).
-          static_assert(std::is_same_v<D, std::monostate> || std::is_same_v<D, checks::HeaderIntegrityDetails>);
-          return Json::object();
-        }
-      },
-      details);
-}
+/// What `admitgen check --json` writes.
+struct CheckDocument {
+  std::string schema = "admitgen.check/1", subject, kind;
+  bool passed = false;
+  std::vector<std::string> failed;
+  std::vector<checks::CheckResult> checks;
+};
 
 }  // namespace
 
+// ---- the field lists of the check report (docs/formats.md, "check report") ------------------------
+
+template <class V>
+void fields(V& v, checks::CausalityDetails& d) {
+  v("slowest_rate_per_s", d.slowest_rate_per_s, kNullable);
+}
+
+template <class V>
+void fields(V& v, checks::StabilityRate& r) {
+  v("fs_hz", r.fs_hz);
+  v("min_margin", r.min_margin);
+  v("slowest_time_constant_s", r.slowest_time_constant_s);
+}
+
+template <class V>
+void fields(V& v, checks::DiscreteStabilityDetails& d) {
+  v("rates", d.rates);
+}
+
+template <class V>
+void fields(V& v, checks::PassivityDetails& d) {
+  v("passive", d.test.passive);
+  v("method", d.test.method);
+  v("crossings_hz", d.test.crossings);
+  v.custom("negative_bands", d.test.bands, NegativeBands{d.places});
+  v("min_re", d.test.min_re);
+  v.custom("min_at_hz", d.test.min_at, Frequency{});
+}
+
+/// A tested rate: the members of passivity_continuous, then fs_hz; a skipped (unstable) one: fs_hz, skipped.
+template <class V>
+void fields(V& v, checks::DiscretePassivityRate& r) {
+  if (r.passivity) fields(v, *r.passivity);
+  v("fs_hz", r.fs_hz);
+  if (!r.passivity) v.custom("skipped", r.passivity, Skipped{});
+}
+
+template <class V>
+void fields(V& v, checks::DiscretePassivityDetails& d) {
+  v("rates", d.rates);
+}
+
+template <class V>
+void fields(V& v, checks::HeadroomRate& r) {
+  v("fs_hz", r.fs_hz);
+  v("max_state_l1", r.max_state_l1);
+  v("output_l1", r.output_l1);
+  v("output_range", r.output_range);
+  v("output_table_mantissa_sum", r.output_table_mantissa_sum);
+}
+
+template <class V>
+void fields(V& v, checks::HeadroomDetails& d) {
+  v("rates", d.rates);
+}
+
+template <class V>
+void fields(V& v, checks::LimitCycleRate& r) {
+  v("fs_hz", r.fs_hz);
+  v("zero_decay_bound", r.zero_decay_bound);
+  v("simulated_samples", r.simulated_samples);
+}
+
+template <class V>
+void fields(V& v, checks::LimitCycleDetails& d) {
+  v("rates", d.rates);
+}
+
+template <class V>
+void fields(V& v, checks::CheckResult& c) {
+  v("check", c.name);
+  v.custom("status", c.status, StatusName{});
+  v("method", c.method);
+  v("summary", c.summary);
+  v("failures", c.failures);
+  v.custom("details", c.details, Details{});
+}
+
+template <class V>
+void fields(V& v, CheckDocument& d) {
+  v("schema", d.schema);
+  v("subject", d.subject);
+  v("kind", d.kind);
+  v("passed", d.passed);
+  v("failed", d.failed);
+  v("checks", d.checks);
+}
+
+// ---- writers --------------------------------------------------------------------------------------
+
 std::string check_report_json(const checks::CheckReport& report) {
-  Json list = Json::array();
-  for (const auto& c : report.checks)
-    list.push_back({{"check", c.name},
-                    {"status", status_json(c.status)},
-                    {"method", c.method},
-                    {"summary", c.summary},
-                    {"failures", c.failures},
-                    {"details", details_json(c.details)}});
-  const Json doc{{"schema", "admitgen.check/1"}, {"subject", report.subject}, {"kind", report.kind},
-                 {"passed", report.passed()}, {"failed", report.failed_checks()}, {"checks", list}};
-  return doc.dump(2) + "\n";
+  CheckDocument d;
+  d.subject = report.subject;
+  d.kind = report.kind;
+  d.passed = report.passed();
+  d.failed = report.failed_checks();
+  d.checks = report.checks;
+  return write_record(d).dump(2) + "\n";
 }
 
 std::string check_report_text(const checks::CheckReport& report) {
@@ -123,6 +187,17 @@ std::string check_report_text(const checks::CheckReport& report) {
   const auto failed = report.failed_checks();
   s += failed.empty() ? "all checks passed\n" : fmt::format("{} check(s) failed\n", failed.size());
   return s;
+}
+
+std::vector<KeyNode> check_report_keys() { return record_keys<CheckDocument>(); }
+
+std::vector<std::pair<std::string, std::vector<KeyNode>>> check_details_keys() {
+  return {{"causality", record_keys<checks::CausalityDetails>()},
+          {"discrete_stability", record_keys<checks::DiscreteStabilityDetails>()},
+          {"passivity_continuous", record_keys<checks::PassivityDetails>()},
+          {"passivity_discrete", record_keys<checks::DiscretePassivityDetails>()},
+          {"headroom", record_keys<checks::HeadroomDetails>()},
+          {"limit_cycle", record_keys<checks::LimitCycleDetails>()}};
 }
 
 }  // namespace admitgen::io

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 /// @file
-/// fit.json (docs/formats.md, "fit.json"): the one reader and the one writer of the fit file. They own its
-/// keys, their order and the schema version ("admitgen.fit/1"); everything else takes the typed record,
+/// fit.json (docs/formats.md, "fit.json"): the one reader and the one writer of the fit file, both driven
+/// by one field list per record (io/record_fields.hpp). They own its keys, their order and the schema
+/// version ("admitgen.fit/1"); everything else takes the typed record,
 /// model/fit_record.hpp. Keys keep a fixed order and numbers print so they read back exactly (shortest
 /// round-trip form), so equal records give equal bytes.
 #pragma once
 
+#include "io/key_table.hpp"
 #include "model/fit_record.hpp"
 
 #include <string>
+#include <vector>
 
 namespace admitgen::io {
 
@@ -22,6 +25,9 @@ FitRecord parse_fit(const std::string& text, const std::string& file);
 
 /// Reads and parses the file at `path` (bounded size; FileError if unreadable).
 FitRecord read_fit_file(const std::string& path);
+
+/// The keys of fit.json as its field list names them (the table of docs/formats.md, "fit.json").
+std::vector<KeyNode> fit_keys();
 
 /// Whether `text` is a JSON document (of any schema).
 bool is_json(const std::string& text);

@@ -98,6 +98,8 @@ std::array<double, 2> Field::number_pair() const {
   return {v[0], v[1]};
 }
 
+Json plain_text(const std::string& text) { return plain_settings(text); }
+
 Json plain_texts(const std::vector<std::string>& texts) {
   Json out = Json::array();
   for (const auto& t : texts) out.push_back(plain_settings(t));

@@ -33,6 +33,10 @@ bool newer_than_this_admitgen(const std::string& version);
 /// Field::numbers_by_name).
 Json numbers_by_name_json(const std::vector<std::pair<std::string, double>>& values);
 
+/// `text` (a warning, a note) with each setting it names spelled by its bare key (core/errors.hpp,
+/// plain_settings): files name settings, never command-line flags.
+Json plain_text(const std::string& text);
+
 /// The JSON array of `texts` (warnings, notes), each setting they name spelled by its bare key
 /// (core/errors.hpp, plain_settings): files name settings, never command-line flags.
 Json plain_texts(const std::vector<std::string>& texts);
@@ -90,6 +94,8 @@ class ObjectReader {
   void finish() const;
   /// Every member in document order (for objects keyed by name); marks them all read.
   std::vector<std::pair<std::string, Field>> members();
+  /// The object read.
+  const Field& field() const { return field_; }
 
  private:
   Field field_;

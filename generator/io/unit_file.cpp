@@ -3,6 +3,7 @@
 
 #include "core/bounded_read.hpp"
 #include "core/errors.hpp"
+#include "io/record_fields.hpp"
 
 #include <fmt/format.h>
 
@@ -61,12 +62,16 @@ class Lines {
   [[noreturn]] void fail(const std::string& what, const std::string& value) const {
     throw FileError(path_, line_, what, value);
   }
+  /// Fails naming the value of the line read last.
+  [[noreturn]] void fail(const std::string& what) const { fail(what, value_); }
 
  private:
   std::string next() {
     std::string line;
     if (!std::getline(in_, line)) fail("unexpected end of a unit file", "");
     ++line_;
+    const auto space = line.find(' ');
+    value_ = space == std::string::npos ? line : line.substr(space + 1);
     return line;
   }
   double parse_double(const std::string& t) {
@@ -78,32 +83,94 @@ class Lines {
   std::string path_;
   std::istringstream in_;
   long line_ = 0;
+  std::string value_;
+};
+
+/// Writes the members a field list names as lines "key value" (io/record_fields.hpp).
+class LineWriter : public EveryVersion<LineWriter> {
+ public:
+  explicit LineWriter(std::string& out) : out_(&out) {}
+  template <class M>
+  void operator()(const char* key, const M& m, unsigned = 0) {
+    if constexpr (std::is_same_v<M, int>)
+      put(*out_, key, static_cast<long>(m));
+    else
+      put(*out_, key, m);
+  }
+  template <class M, class C>
+  void custom(const char* key, const M& m, const C& codec) {
+    put(*out_, key, codec.write(m));
+  }
+
+ private:
+  std::string* out_;
+};
+
+/// Reads the members a field list names from the lines, in order.
+class LineReader {
+ public:
+  explicit LineReader(Lines& in) : in_(&in) {}
+  void operator()(const char* key, std::string& m, unsigned = 0) { m = in_->text(key); }
+  void operator()(const char* key, double& m, unsigned = 0) { m = in_->number(key); }
+  void operator()(const char* key, long& m, unsigned = 0) { m = in_->integer(key); }
+  void operator()(const char* key, int& m, unsigned = 0) { m = static_cast<int>(in_->integer(key)); }
+  void operator()(const char* key, std::vector<double>& m, unsigned = 0) { m = in_->numbers(key); }
+  template <class M, class C>
+  void custom(const char* key, M& m, const C& codec) {
+    codec.read(*in_, in_->text(key), m);
+  }
+  void expect(bool condition, const std::string& what) {
+    if (!condition) in_->fail(what);
+  }
+
+ private:
+  Lines* in_;
+};
+
+/// An order by its name ("Q1S1").
+struct OrderLine {
+  std::string write(const Order& order) const { return order.name(); }
+  void read(const Lines& in, const std::string& text, Order& order) const {
+    try {
+      order = Order::parse(text);
+    } catch (const InputError&) {
+      in.fail("not an order", text);
+    }
+  }
 };
 
 }  // namespace
 
+/// The field list of a unit file (docs/formats.md, "Library unit results").
+template <class V>
+void fields(V& v, UnitResult& u) {
+  ModelResult& m = u.model;
+  NestedRun& r = m.run;
+  v("key", u.key);
+  v.custom("order", m.order, OrderLine{});
+  v("live", m.live);
+  v("seconds", m.seconds);
+  v("sampler", m.sampler);
+  v("sampler_note", m.sampler_note);
+  v("dim", r.dim);
+  v.expect(r.dim == m.order.dim(), fmt::format("dim is not that of {}", m.order.name()));
+  v("log_z", r.log_z);
+  v("log_z_error", r.log_z_error);
+  v("information", r.information);
+  v("max_log_likelihood", r.max_log_likelihood);
+  v("calls", r.calls);
+  v("iterations", r.iterations);
+  v("stopped_by", r.stopped_by);
+  v("log_support_fraction", r.log_support_fraction);
+  v("samples", r.samples);
+  v("log_likelihood", r.log_likelihood);
+  v("log_weight", r.log_weight);
+}
+
 std::string unit_text(const UnitResult& u) {
-  const ModelResult& m = u.model;
-  const NestedRun& r = m.run;
   std::string out = std::string(kSchema) + "\n";
-  put(out, "key", u.key);
-  put(out, "order", m.order.name());
-  put(out, "live", static_cast<long>(m.live));
-  put(out, "seconds", m.seconds);
-  put(out, "sampler", m.sampler);
-  put(out, "sampler_note", m.sampler_note);
-  put(out, "dim", static_cast<long>(r.dim));
-  put(out, "log_z", r.log_z);
-  put(out, "log_z_error", r.log_z_error);
-  put(out, "information", r.information);
-  put(out, "max_log_likelihood", r.max_log_likelihood);
-  put(out, "calls", r.calls);
-  put(out, "iterations", r.iterations);
-  put(out, "stopped_by", r.stopped_by);
-  put(out, "log_support_fraction", r.log_support_fraction);
-  put(out, "samples", r.samples);
-  put(out, "log_likelihood", r.log_likelihood);
-  put(out, "log_weight", r.log_weight);
+  LineWriter w(out);
+  fields(w, const_cast<UnitResult&>(u));  // one field list for the writer and the reader: the writer only reads
   out += "end\n";
   return out;
 }
@@ -112,32 +179,10 @@ UnitResult read_unit_file(const std::string& path) {
   Lines in(path, read_bounded(path, std::size_t{1} << 30, "unit file"));
   if (const std::string schema = in.text(kSchema); !schema.empty()) in.fail("unknown schema", schema);
   UnitResult u;
-  u.key = in.text("key");
+  LineReader reader(in);
+  fields(reader, u);
   ModelResult& m = u.model;
-  const std::string order = in.text("order");
-  try {
-    m.order = Order::parse(order);
-  } catch (const InputError&) {
-    in.fail("not an order", order);
-  }
-  m.live = static_cast<int>(in.integer("live"));
-  m.seconds = in.number("seconds");
-  m.sampler = in.text("sampler");
-  m.sampler_note = in.text("sampler_note");
-  NestedRun& r = m.run;
-  r.dim = static_cast<int>(in.integer("dim"));
-  if (r.dim != m.order.dim()) in.fail(fmt::format("dim is not that of {}", m.order.name()), std::to_string(r.dim));
-  r.log_z = in.number("log_z");
-  r.log_z_error = in.number("log_z_error");
-  r.information = in.number("information");
-  r.max_log_likelihood = in.number("max_log_likelihood");
-  r.calls = in.integer("calls");
-  r.iterations = in.integer("iterations");
-  r.stopped_by = in.text("stopped_by");
-  r.log_support_fraction = in.number("log_support_fraction");
-  r.samples = in.numbers("samples");
-  r.log_likelihood = in.numbers("log_likelihood");
-  r.log_weight = in.numbers("log_weight");
+  const NestedRun& r = m.run;
   if (r.samples.size() != r.log_likelihood.size() * static_cast<std::size_t>(r.dim) ||
       r.log_weight.size() != r.log_likelihood.size())
     in.fail("samples, log_likelihood and log_weight disagree in length", std::to_string(r.log_likelihood.size()));
@@ -145,6 +190,8 @@ UnitResult read_unit_file(const std::string& path) {
   m.parameters = summarize(r, m.order.parameter_names());
   return u;
 }
+
+std::vector<KeyNode> unit_keys() { return record_keys<UnitResult>(); }
 
 std::string unit_file_key(const std::string& path) {
   std::ifstream f(path);

@@ -3,6 +3,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
+#include "core/text.hpp"
 
 #include <fmt/format.h>
 
@@ -45,7 +46,7 @@ void refuse_while_queued(const fs::path& slurm) {
     std::ifstream in(slurm / fmt::format("submitted-{}.txt", n));
     std::string kind, id;
     while (in >> kind && std::getline(in, id)) {
-      id.erase(0, id.find_first_not_of(' '));
+      id = std::string(trim(id, " "));
       if ((kind != "array" && kind != "merge") || id.empty()) continue;
       const auto [out, status] = run_status("squeue -h -o %i -j " + id);
       if (status == 0 && out.find_first_not_of(" \n") != std::string::npos)

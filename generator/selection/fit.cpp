@@ -29,7 +29,7 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
 SamplerKind parse_sampler_kind(const std::string& text) {
   if (text == "poles") return SamplerKind::poles;
   if (text == "full") return SamplerKind::full;
-  throw InputError(fmt::format("{} '{}': expected poles (default) or full", setting("sampler_kind"), text));
+  throw InputError(fmt::format("{} '{}': expected poles or full", setting("sampler_kind"), text));
 }
 
 Model order_model(const Measurement& data, const Order& order, const FitSettings& settings) {

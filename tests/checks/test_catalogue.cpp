@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The catalogue of deliberately broken filters (each flagged with the right named failure) and good
 // filters that pass every check (checks/check_suite.hpp).
+#include "io/check_input.hpp"
 #include "io/fit_file.hpp"
+#include "io/model_block.hpp"
 #include "checks/check_suite.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
@@ -44,10 +46,10 @@ void set_model(Emission& e, const std::vector<double>& theta) {
   }
 }
 
-std::string render(const Emission& e) { return render_header(e, load_template("", "admitgen_boundary.h.in"), "wall.h"); }
+std::string render(const Emission& e) { return io::header_text(e, load_template("", "admitgen_boundary.h.in"), "wall.h"); }
 
 std::vector<std::string> failed(const std::string& header) {
-  return run_checks(checks::subject_from_header(header, "wall.h")).failed_checks();
+  return run_checks(io::header_subject(header, "wall.h")).failed_checks();
 }
 
 std::vector<std::string> failed_fit(const FitRecord& fit) {
@@ -95,7 +97,7 @@ TEST_CASE("catalogue: broken continuous models") {
   {
     auto e = emission(Format::q31, {48000});
     set_model(e, {0.2, 0.0, 1000.0, -300.0, 0.0, 600.0, 2 * kPi * 1000.0});
-    const auto report = run_checks(checks::subject_from_header(render(e), "wall.h"));
+    const auto report = run_checks(io::header_subject(render(e), "wall.h"));
     CHECK(has(report.failed_checks(), "passivity_continuous"));
     CHECK(has(report.failed_checks(), "passivity_discrete"));
     CHECK(report.checks[2].failures.at(0).find("inside the data band") != std::string::npos);
@@ -104,7 +106,7 @@ TEST_CASE("catalogue: broken continuous models") {
   {
     auto e = emission(Format::f32, {48000});
     set_model(e, {0.2, 0.0, 1000.0, -300.0, 0.0, 600.0, 2 * kPi * 10000.0});
-    const auto report = run_checks(checks::subject_from_header(render(e), "wall.h"));
+    const auto report = run_checks(io::header_subject(render(e), "wall.h"));
     CHECK(has(report.failed_checks(), "passivity_continuous"));
     CHECK(report.checks[2].failures.at(0).find("above the data band") != std::string::npos);
   }

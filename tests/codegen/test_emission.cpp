@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Header generation (codegen/emission.hpp, template_text.hpp, band_absorption.hpp) and `admitgen emit`.
 #include "io/fit_file.hpp"
+#include "io/model_block.hpp"
 #include "codegen/band_absorption.hpp"
 #include "codegen/emission.hpp"
 #include "codegen/template_text.hpp"
@@ -47,12 +48,12 @@ TEST_CASE("emitted header: stamped, deterministic, machine-readable block reads 
   s.estimate = Estimate::mean;  // the committed reference fit predates passive estimates
   const auto e = prepare_emission(reference_json(), "q1s1_reference.json", s);
   const std::string tpl = load_template("", "admitgen_boundary.h.in");
-  const std::string h1 = render_header(e, tpl, "wall.h"), h2 = render_header(e, tpl, "wall.h");
+  const std::string h1 = io::header_text(e, tpl, "wall.h"), h2 = io::header_text(e, tpl, "wall.h");
   CHECK(h1 == h2);
   CHECK(h1.find("ADMITGEN_RT_ABI_VERSION != 1") != std::string::npos);
   CHECK(h1.find(e.input_sha256) != std::string::npos);
   CHECK(h1.find("fit seed 1") != std::string::npos);
-  const auto back = read_emitted_header(h1, "wall.h");
+  const auto back = io::read_emitted_header(h1, "wall.h");
   REQUIRE(back.rates.size() == 2);
   CHECK(back.format == Format::q31);
   CHECK(back.surface.order == e.surface.order);
@@ -64,7 +65,7 @@ TEST_CASE("emitted header: stamped, deterministic, machine-readable block reads 
     CHECK(q.pair.front().p_i == ref.pair.front().p_i);
     CHECK(q.real.front().eps == ref.real.front().eps);
   }
-  CHECK_THROWS_AS(read_emitted_header("/* nothing */", "x.h"), InputError);
+  CHECK_THROWS_AS(io::read_emitted_header("/* nothing */", "x.h"), InputError);
 }
 
 TEST_CASE("emit settings are validated") {
