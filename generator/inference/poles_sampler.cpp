@@ -41,23 +41,20 @@ Model pole_model(const Order& order, const PoleTransform& transform, const Resid
 
 }  // namespace
 
-NestedRun sample_poles(const Measurement& data, const Order& order, const PriorRanges& priors, bool reduce_symmetry,
-                       DataCount count, const NestedSettings& settings, const NestedProgressFn& progress) {
+NestedRun run_poles_sampler(const Measurement& data, const Order& order, const PriorRanges& priors,
+                            bool reduce_symmetry, DataCount count, const NestedSettings& settings,
+                            std::uint64_t draw_seed, const NestedProgressFn& progress) {
   ADMITGEN_ENSURE(priors.residues == ResiduePrior::gaussian, "the pole sampler needs the Gaussian residue prior");
   const PoleTransform transform(order, priors, reduce_symmetry);
   const ResidueEvidence evidence(data, order, count, priors.admittance_scale);
+  const int dim = transform.dim();
   // The pole space has few dimensions (Q + 2S), where draws from bounding ellipsoids replace slice chains
   // at a fraction of the calls (inference/ellipsoid_union.hpp).
   NestedSettings pole_settings = settings;
   pole_settings.ellipsoid_draws = true;
-  return transform.dim() == 0 ? analytic_run(evidence, settings.live)
-                              : run_nested_sampling(pole_model(order, transform, evidence), pole_settings, progress);
-}
+  const NestedRun poles = dim == 0 ? analytic_run(evidence, settings.live)
+                                   : run_nested_sampling(pole_model(order, transform, evidence), pole_settings, progress);
 
-NestedRun complete_residues(const Measurement& data, const Order& order, const PriorRanges& priors, DataCount count,
-                            const NestedRun& poles, std::uint64_t draw_seed) {
-  const ResidueEvidence evidence(data, order, count, priors.admittance_scale);
-  const int dim = poles.dim;
   NestedRun run = poles;
   run.dim = order.dim();
   run.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
@@ -96,13 +93,6 @@ NestedRun complete_residues(const Measurement& data, const Order& order, const P
   }
   run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());
   return run;
-}
-
-NestedRun run_poles_sampler(const Measurement& data, const Order& order, const PriorRanges& priors,
-                            bool reduce_symmetry, DataCount count, const NestedSettings& settings,
-                            std::uint64_t draw_seed, const NestedProgressFn& progress) {
-  return complete_residues(data, order, priors, count,
-                           sample_poles(data, order, priors, reduce_symmetry, count, settings, progress), draw_seed);
 }
 
 }  // namespace admitgen

@@ -26,14 +26,6 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
                             bool reduce_symmetry, DataCount count, const NestedSettings& settings,
                             std::uint64_t draw_seed, const NestedProgressFn& progress = {});
 
-/// run_poles_sampler in two steps, so that several pole runs can be merged in between
-/// (inference/merged_runs.hpp): the nested-sampling run over ψ (Q + 2S numbers per point) ...
-NestedRun sample_poles(const Measurement& data, const Order& order, const PriorRanges& priors, bool reduce_symmetry,
-                       DataCount count, const NestedSettings& settings, const NestedProgressFn& progress = {});
-/// ... and the complete posterior from it: the residues drawn for each pole sample, the best θ appended.
-NestedRun complete_residues(const Measurement& data, const Order& order, const PriorRanges& priors, DataCount count,
-                            const NestedRun& poles, std::uint64_t draw_seed);
-
 /// Points of a run whose posterior share is below this over the number of points keep their least-squares
 /// residues instead of a draw from the conditional (together at most this share of the posterior).
 constexpr double kNegligibleShare = 1e-6;

@@ -4,7 +4,6 @@
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "inference/comparison.hpp"
-#include "inference/merged_runs.hpp"
 #include "inference/poles_sampler.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
@@ -47,43 +46,30 @@ Model order_model(const Measurement& data, const Order& order, const FitSettings
 
 namespace {
 
-/// Run `part` of round `round` of an order: the round's seed stream (part 0) or a stream derived from it, at
-/// the setting's live points. Round r is made of 2^r such runs, merged (inference/merged_runs.hpp).
-NestedSettings part_settings(const Order& order, const FitSettings& settings, int round, int part) {
+NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round) {
   NestedSettings sampler = settings.sampler;
   sampler.seed = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
-  if (part > 0) sampler.seed = derive_seed(sampler.seed, static_cast<std::uint64_t>(part));
+  sampler.live = settings.sampler.live << round;
   return sampler;
 }
 
-int parts_of_round(int round) { return 1 << round; }
-
-/// One nested-sampling run of an order: over ψ for the pole sampler, over θ for the full one.
-NestedRun sample_part(const Measurement& data, const Order& order, const FitSettings& settings, int round, int part,
-                      const NestedProgressFn& progress) {
-  const NestedSettings sampler = part_settings(order, settings, round, part);
-  if (order_sampler(settings) == SamplerKind::poles)
-    return sample_poles(data, order, settings.priors, settings.reduce_symmetry, settings.data_count, sampler, progress);
-  return run_nested_sampling(order_model(data, order, settings), sampler, progress);
+ModelResult run_full(const Measurement& data, const Order& order, const FitSettings& settings,
+                     const NestedProgressFn& progress, int round) {
+  const NestedSettings sampler = order_sampler_settings(order, settings, round);
+  ModelResult result{order, run_nested_sampling(order_model(data, order, settings), sampler, progress), sampler.live,
+                     0.0, {}};
+  result.sampler = "full";
+  return result;
 }
 
-/// The order's result from the runs of its round: merged, the residues drawn (pole sampler), folded to the
-/// reduced form and summarised.
-ModelResult finish_order(const Measurement& data, const Order& order, const FitSettings& settings, int round,
-                         const std::vector<NestedRun>& parts) {
-  std::string note;
-  const bool poles = order_sampler(settings, &note) == SamplerKind::poles;
-  NestedRun run = merge_runs(parts, settings.sampler.live);
-  if (poles) {
-    const std::uint64_t draw_seed = derive_seed(part_settings(order, settings, round, 0).seed, 0x7e51dULL);
-    run = complete_residues(data, order, settings.priors, settings.data_count, run, draw_seed);
-  }
-  ModelResult result{order, std::move(run), settings.sampler.live * parts_of_round(round), 0.0, {}};
-  result.sampler = poles ? kPoleSamplerName : "full";
-  result.sampler_note = note;
-  for (std::size_t i = 0; i < result.run.size(); ++i)
-    fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
-  result.parameters = summarize(result.run, order.parameter_names());
+ModelResult run_poles(const Measurement& data, const Order& order, const FitSettings& settings,
+                      const NestedProgressFn& progress, int round) {
+  const NestedSettings sampler = order_sampler_settings(order, settings, round);
+  ModelResult result{order,
+                     run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
+                                       sampler, derive_seed(sampler.seed, 0x7e51dULL), progress),
+                     sampler.live, 0.0, {}};
+  result.sampler = kPoleSamplerName;
   return result;
 }
 
@@ -107,16 +93,29 @@ FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
   return settings;
 }
 
-ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& given,
+namespace {
+
+/// fit_order without its timing: what the comparison driver runs (and times) for each order of a fit.
+ModelResult run_order(const Measurement& data, const Order& order, const FitSettings& given,
                       const NestedProgressFn& progress, int round) {
   const FitSettings settings = with_band_priors(given, data);
+  std::string note;
+  ModelResult result = order_sampler(settings, &note) == SamplerKind::poles
+                           ? run_poles(data, order, settings, progress, round)
+                           : run_full(data, order, settings, progress, round);
+  result.sampler_note = note;
+  for (std::size_t i = 0; i < result.run.size(); ++i)
+    fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
+  result.parameters = summarize(result.run, order.parameter_names());
+  return result;
+}
+
+}  // namespace
+
+ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
+                      const NestedProgressFn& progress, int round) {
   std::optional<ModelResult> result;
-  const TaskTime time = timed([&] {
-    std::vector<NestedRun> parts;
-    for (int part = 0; part < parts_of_round(round); ++part)
-      parts.push_back(sample_part(data, order, settings, round, part, progress));
-    result.emplace(finish_order(data, order, settings, round, parts));
-  });
+  const TaskTime time = timed([&] { result.emplace(run_order(data, order, settings, progress, round)); });
   result->seconds = time.seconds;
   result->cpu_seconds = time.cpu_seconds;
   return std::move(*result);
@@ -304,57 +303,33 @@ std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
 namespace {
 
 /// Runs the orders grid[i] for i in `which` on the comparison driver (inference/comparison.hpp), largest first,
-/// writing results[i]: order i in round[i] is 2^round[i] runs of the live points on their own seed streams, which
-/// run in parallel, then merged (finish_order, again on the driver).
-void run_orders(const Measurement& data, const FitSettings& given, const std::vector<Order>& grid,
+/// writing results[i]; order i runs with 2^round[i] times the live points and that round's seed stream.
+void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
                 const std::vector<std::size_t>& which, const std::vector<int>& round,
                 std::vector<ModelResult>& results, Progress& progress) {
-  const FitSettings settings = with_band_priors(given, data);
   std::vector<std::size_t> queue = which;
   std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
-  struct Part {
-    std::size_t order;
-    int part;
-  };
-  std::vector<Part> parts;
   std::vector<ComparisonJob> jobs;
-  std::vector<std::size_t> part_queue;
-  for (std::size_t i : queue)
-    for (int p = 0; p < parts_of_round(round[i]); ++p) {
-      const Order& o = grid[i];
-      const double per_call = 1.0 + o.q() + o.s();  // a likelihood call costs in proportion (fit_cost.hpp)
-      const std::string label = round[i] == 0 ? o.name() : fmt::format("{} ({}/{})", o.name(), p + 1, parts_of_round(round[i]));
-      part_queue.push_back(parts.size());
-      parts.push_back({i, p});
-      jobs.push_back({label, per_call * expected_evaluations(o, settings, settings.sampler.live), settings.sampler.dlogz});
-    }
-  std::vector<std::vector<NestedRun>> runs(grid.size());
-  for (std::size_t i : queue) runs[i].resize(static_cast<std::size_t>(parts_of_round(round[i])));
-  Comparison comparison(progress, settings.threads, "runs");
-  const auto times = comparison.run(jobs, part_queue, [&](std::size_t k, const NestedProgressFn& status) {
-    const Part& part = parts[k];
-    runs[part.order][static_cast<std::size_t>(part.part)] =
-        sample_part(data, grid[part.order], settings, round[part.order], part.part, status);
-  });
-  std::vector<TaskTime> sampled(grid.size());
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    sampled[parts[k].order].seconds += times[k].seconds;
-    sampled[parts[k].order].cpu_seconds += times[k].cpu_seconds;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    const Order& o = grid[i];
+    const double per_call = 1.0 + o.q() + o.s();  // a likelihood call costs in proportion (fit_cost.hpp)
+    jobs.push_back({o.name(), per_call * expected_evaluations(o, settings, settings.sampler.live << round[i]),
+                    settings.sampler.dlogz});
   }
-  std::vector<ComparisonJob> finishing;
-  for (const Order& o : grid) finishing.push_back({o.name(), 1.0, settings.sampler.dlogz});
-  Comparison merging(progress, settings.threads, "orders");
-  const auto finish_times = merging.run(
-      finishing, queue,
-      [&](std::size_t i, const NestedProgressFn&) { results[i] = finish_order(data, grid[i], settings, round[i], runs[i]); },
+  Comparison comparison(progress, settings.threads, "orders");
+  const auto times = comparison.run(
+      jobs, queue,
+      [&](std::size_t i, const NestedProgressFn& status) {
+        results[i] = run_order(data, grid[i], settings, status, round[i]);
+      },
       [&](std::size_t i, const TaskTime& time) {
         const ModelResult& m = results[i];
         return fmt::format("  {:<5} ln Z = {:10.2f} ± {:.2f}  ({} calls, {:.1f} s)", m.order.name(), m.run.log_z,
-                           m.run.log_z_error, m.run.calls, sampled[i].seconds + time.seconds);
+                           m.run.log_z_error, m.run.calls, time.seconds);
       });
   for (std::size_t i : queue) {
-    results[i].seconds = sampled[i].seconds + finish_times[i].seconds;
-    results[i].cpu_seconds = sampled[i].cpu_seconds + finish_times[i].cpu_seconds;
+    results[i].seconds = times[i].seconds;
+    results[i].cpu_seconds = times[i].cpu_seconds;
   }
 }
 
@@ -368,8 +343,8 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
     for (const MissedMode& m : missed_modes(data, settings, results))
       if (rounds[m.order] < round) which.push_back(m.order);
     if (which.empty()) continue;
-    progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points ({} runs of {}, merged)",
-                                 which.size(), settings.sampler.live << round, 1 << round, settings.sampler.live));
+    progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
+                                 settings.sampler.live << round));
     std::vector<ModelResult> again = results;
     const std::vector<int> at(grid.size(), round);
     run_orders(data, settings, grid, which, at, again, progress);
