@@ -12,8 +12,12 @@
 ///  5. with --order QxSy (and optionally --live N, --sampler full|poles, --basotect for the quick-start
 ///     file): that order alone, no other section: calls, seconds, ns per call, the sampler used and
 ///     any fallback (for profiling one order).
-/// Usage: bench_fit [DATA.csv] [--quick] [--basotect] [--order QxSy [--live N] [--sampler KIND] [--seed S]]
-///  (--quick skips the 1-thread grid)
+///  6. with --order QxSy --seeds N: that order on seeds S … S + N − 1 (two at a time), then the spread of ln Z
+///     over the seeds against the mean reported error, and the mean calls: what a change of the sampler must be
+///     judged by (one seed's calls and ln Z scatter more than most changes move them; docs/validation.md, "Speed").
+/// Usage: bench_fit [DATA.csv] [--quick] [--basotect] [--order QxSy [--live N] [--sampler KIND] [--seed S]
+///  [--seeds N]]  (--quick skips the 1-thread grid)
+#include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
 #include "inference/likelihood.hpp"
@@ -25,11 +29,14 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <complex>
 #include <cstring>
 #include <string>
+#include <vector>
 
 using namespace admitgen;
 using Clock = std::chrono::steady_clock;
@@ -144,6 +151,42 @@ void single_order(const Measurement& data, const Order& order, SamplerKind kind,
   if (!m.sampler_note.empty()) fmt::print("  {}\n", m.sampler_note);
 }
 
+/// One order over `seeds` seeds (section 6 of the file comment).
+void seed_spread(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed,
+                 int seeds) {
+  FitSettings s;
+  s.sampler_kind = kind;
+  s.sampler.live = live;
+  std::vector<ModelResult> runs;
+  for (int k = 0; k < seeds; ++k) runs.push_back(ModelResult{Order(0, 0), {}, 0, 0.0, {}});
+  std::vector<std::size_t> queue(static_cast<std::size_t>(seeds));
+  for (std::size_t k = 0; k < queue.size(); ++k) queue[k] = k;
+  run_in_parallel(queue, 2, [&](std::size_t k) {
+    FitSettings mine = s;
+    mine.sampler.seed = seed + k;
+    runs[k] = fit_order(data, order, mine);
+  });
+  double mean = 0.0, error = 0.0, calls = 0.0;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const ModelResult& m = runs[k];
+    fmt::print("{} seed {}: ln Z {:.3f} ± {:.3f}, {} calls, {} iterations\n", order.name(), seed + k, m.run.log_z,
+               m.run.log_z_error, m.run.calls, m.run.iterations);
+    mean += m.run.log_z;
+    error += m.run.log_z_error;
+    calls += static_cast<double>(m.run.calls);
+  }
+  const double n = static_cast<double>(seeds);
+  mean /= n, error /= n, calls /= n;
+  double variance = 0.0;
+  for (const ModelResult& m : runs) variance += (m.run.log_z - mean) * (m.run.log_z - mean);
+  const double sd = std::sqrt(variance / std::max(n - 1.0, 1.0));
+  // The standard deviation of n values has a relative standard error of about 1/√(2(n − 1)).
+  fmt::print("{} over {} seeds ({} live): mean ln Z {:.3f} ± {:.3f} (standard error), spread {:.3f} (± {:.0f} %) against "
+             "the mean reported error {:.3f}: {:.2f}x; mean calls {:.0f}\n",
+             order.name(), seeds, live, mean, sd / std::sqrt(n), sd, 100.0 / std::sqrt(2.0 * std::max(n - 1.0, 1.0)),
+             error, sd / error, calls);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -152,6 +195,7 @@ int main(int argc, char** argv) {
   std::string order_name;
   int live = 100;
   std::uint64_t seed = 1;
+  int seeds = 0;
   SamplerKind single_kind = SamplerKind::poles;
   for (int i = 1; i < argc; ++i) {
     const bool has_value = i + 1 < argc;
@@ -160,6 +204,7 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--order") == 0 && has_value) order_name = argv[++i];
     else if (std::strcmp(argv[i], "--live") == 0 && has_value) live = std::stoi(argv[++i]);
     else if (std::strcmp(argv[i], "--seed") == 0 && has_value) seed = std::stoull(argv[++i]);
+    else if (std::strcmp(argv[i], "--seeds") == 0 && has_value) seeds = std::stoi(argv[++i]);
     else if (std::strcmp(argv[i], "--sampler") == 0 && has_value) single_kind = parse_sampler_kind(argv[++i]);
     else path = argv[i];
   }
@@ -168,7 +213,8 @@ int main(int argc, char** argv) {
   foam_options.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
   if (!order_name.empty()) {
     const Measurement data = basotect ? read_measurement(quick_start, foam_options) : read_measurement(path, ReadOptions{});
-    single_order(data, Order::parse(order_name), single_kind, live, seed);
+    if (seeds > 0) seed_spread(data, Order::parse(order_name), single_kind, live, seed, seeds);
+    else single_order(data, Order::parse(order_name), single_kind, live, seed);
     return 0;
   }
   const Measurement data = read_measurement(path, ReadOptions{});
