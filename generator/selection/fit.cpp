@@ -312,9 +312,7 @@ void run_orders(const Measurement& data, const FitSettings& settings, const std:
   std::vector<ComparisonJob> jobs;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const Order& o = grid[i];
-    const double per_call = 1.0 + o.q() + o.s();  // a likelihood call costs in proportion (fit_cost.hpp)
-    jobs.push_back({o.name(), per_call * expected_evaluations(o, settings, settings.sampler.live << round[i]),
-                    settings.sampler.dlogz});
+    jobs.push_back({o.name(), expected_work(o, settings, settings.sampler.live << round[i]), settings.sampler.dlogz});
   }
   Comparison comparison(progress, settings.threads, "orders");
   const auto times = comparison.run(

@@ -72,6 +72,10 @@ double expected_evaluations(const Order& order, const FitSettings& settings, int
   return (poles ? kPoleEvaluationsPerLiveDimSlice : kEvaluationsPerLiveDimSlice) * live * dim * slices;
 }
 
+double expected_work(const Order& order, const FitSettings& settings, int live) {
+  return (1.0 + order.q() + order.s()) * expected_evaluations(order, settings, live);
+}
+
 FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& settings) {
   FitCostEstimate e;
   e.points = static_cast<long>(data.size());
@@ -80,9 +84,9 @@ FitCostEstimate estimate_fit_cost(const Measurement& data, const FitSettings& se
   const double largest_terms = 1.0 + settings.qmax + settings.smax;
   for (int q = 0; q <= settings.qmax; ++q)
     for (int s = 0; s <= settings.smax; ++s) {
-      const double evaluations = expected_evaluations(Order(q, s), settings, settings.sampler.live);
-      e.evaluations += evaluations;
-      const double seconds = evaluations * e.seconds_per_evaluation * (1.0 + q + s) / largest_terms;
+      const Order order(q, s);
+      e.evaluations += expected_evaluations(order, settings, settings.sampler.live);
+      const double seconds = expected_work(order, settings, settings.sampler.live) * e.seconds_per_evaluation / largest_terms;
       e.cpu_seconds += seconds;
       e.longest_order_seconds = std::max(e.longest_order_seconds, seconds);
       ++e.orders;

@@ -36,6 +36,9 @@ struct FitCostEstimate {
 
 /// Likelihood evaluations that one order is expected to take at `live` live points (the model above).
 double expected_evaluations(const Order& order, const FitSettings& settings, int live);
+/// Its expected work: those evaluations, each in proportion to 1 + Q + S (the pole terms per point). The unit is
+/// one evaluation of a one-term model; the comparison driver's time left is estimated from it.
+double expected_work(const Order& order, const FitSettings& settings, int live);
 
 /// Times the largest order's likelihood on `data` (a few evaluations, at least 20 ms) and applies the
 /// model above.
