@@ -65,10 +65,23 @@ TEST_CASE("effect likelihood: marginal Gaussian prefers the true model - noise s
   CHECK(l({truth, Eigen::ArrayXd::Constant(100, 3.0)}) == doctest::Approx(l({truth, {}})));
 }
 
+namespace {
+
+/// 50 points over 100-2000 Hz of a constant admittance and the gap of a 10 % offset against it: structured
+/// (lag-1 correlation 1), the gap the verdict cases below decide on.
+struct OffsetGap {
+  Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
+  Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
+  Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
+};
+
+}  // namespace
+
 TEST_CASE("verdict: decisive (≥ 20 dB) best effect, else none, unexplained when the explanation leaves structure") {
-  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
-  const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
-  const Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
+  const OffsetGap offset;
+  const Eigen::ArrayXd& f = offset.f;
+  const Eigen::ArrayXcd& y = offset.y;
+  const Gap& gap = offset.gap;
   std::vector<EffectCandidate> candidates(1);
   candidates[0].name = "temperature";
   candidates[0].priors = {{"delta_k", ParameterPrior::Shape::uniform, -10, 10}};
@@ -112,9 +125,10 @@ TEST_CASE("verdict: the main cause has the largest share and explains at least h
   // Two members, shares and alone fractions set by hand (member_shares computes them; tested against synth
   // in test_combined_effects.cpp): the rule is what is tested here. A share of 1.2 beside −0.3 is two members
   // that partly cancel; the first alone explains 0.1 of the squared gap, so it is not the main cause.
-  const Eigen::ArrayXd f = Eigen::ArrayXd::LinSpaced(50, 100.0, 2000.0);
-  const Eigen::ArrayXcd y = Eigen::ArrayXcd::Constant(50, {0.5, 0.1});
-  const Gap gap = measure_gap(f, y, y * 1.1, rms_level(y));
+  const OffsetGap offset;
+  const Eigen::ArrayXd& f = offset.f;
+  const Eigen::ArrayXcd& y = offset.y;
+  const Gap& gap = offset.gap;
   std::vector<EffectCandidate> candidates(2);
   candidates[0].name = "air_gap";
   candidates[1].name = "edge_gap";
