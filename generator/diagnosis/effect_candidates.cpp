@@ -52,9 +52,99 @@ SimulatedChange no_change(const EffectContext& c) {
   return out;
 }
 
+}  // namespace
+
+/// The simulated side under one simulated-stage member of one parameter θ (a catalogue ratio, an air
+/// gap, a frequency ratio), tabulated on the data grid: a joint candidate that holds such a member
+/// evaluates it tens of thousands of times, and re-evaluating a layered SPEC costs far more than the
+/// other members. y(θ) is smooth in the prior's coordinate v (ln θ for a log-uniform prior, θ for a
+/// uniform one): the table holds y at equally spaced v over the prior, read by 4-point Lagrange
+/// interpolation (one-sided in the end cells). Built on first use from 33 nodes, doubled (the new
+/// nodes are the old midpoints, where the interpolation error of the coarser table is largest) until
+/// every midpoint agrees with the exact side to kSimulatedTableTolerance of the rms simulated
+/// admittance (tested in tests/diagnosis/test_combined_effects.cpp); a side needing more than
+/// kSimulatedTableMaxNodes nodes is not tabulated (evaluated exactly each time).
+class SimulatedTable {
+ public:
+  static constexpr double kSimulatedTableTolerance = 1e-9;
+  static constexpr int kSimulatedTableMaxNodes = 1025;
+
+  /// The side under `change` at θ, θ over `prior` (the member's own prior and change).
+  SimulatedTable(std::shared_ptr<const EffectContext> c, ParameterPrior prior,
+                 std::function<void(SimulatedChange&, const double* theta)> change)
+      : c_(std::move(c)), prior_(std::move(prior)), change_(std::move(change)) {}
+
+  /// The simulated side at θ (to the tolerance above).
+  Eigen::ArrayXcd operator()(double theta) const {
+    std::call_once(built_, [this] { build(); });
+    if (nodes_.empty()) return exact(theta);
+    return lookup(prior_.shape == ParameterPrior::Shape::log_uniform ? std::log(theta) : theta);
+  }
+
+  /// Nodes of the table once built (0 when not tabulated).
+  std::size_t nodes() const {
+    std::call_once(built_, [this] { build(); });
+    return nodes_.size();
+  }
+
+ private:
+  Eigen::ArrayXcd exact(double theta) const {
+    SimulatedChange s = no_change(*c_);
+    change_(s, &theta);
+    return simulated(*c_, s);
+  }
+  double theta_at(double v) const {
+    return prior_.shape == ParameterPrior::Shape::log_uniform ? std::exp(v) : v;
+  }
+  void build() const {
+    const ParameterPrior& p = prior_;
+    const bool log = p.shape == ParameterPrior::Shape::log_uniform;
+    v_lo_ = log ? std::log(p.lo) : p.lo;
+    const double v_hi = log ? std::log(p.hi) : p.hi;
+    const double scale = std::sqrt(c_->y_sim.abs2().mean());
+    std::vector<Eigen::ArrayXcd> nodes;
+    for (int k = 0; k < 33; ++k) nodes.push_back(exact(theta_at(v_lo_ + (v_hi - v_lo_) * k / 32.0)));
+    while (nodes.size() <= static_cast<std::size_t>(kSimulatedTableMaxNodes)) {
+      nodes_ = std::move(nodes);
+      step_ = (v_hi - v_lo_) / static_cast<double>(nodes_.size() - 1);
+      nodes.clear();
+      double worst = 0.0;
+      for (std::size_t k = 0; k + 1 < nodes_.size(); ++k) {
+        const double v = v_lo_ + (static_cast<double>(k) + 0.5) * step_;
+        Eigen::ArrayXcd mid = exact(theta_at(v));
+        worst = std::max(worst, (lookup(v) - mid).abs().maxCoeff());
+        nodes.push_back(nodes_[k]);
+        nodes.push_back(std::move(mid));
+      }
+      nodes.push_back(nodes_.back());
+      if (worst <= kSimulatedTableTolerance * scale) return;
+    }
+    nodes_.clear();  // too wiggly to tabulate within the budget: exact every time
+  }
+  Eigen::ArrayXcd lookup(double v) const {
+    const double q = std::clamp((v - v_lo_) / step_, 0.0, static_cast<double>(nodes_.size() - 1));
+    const Eigen::Index k = std::clamp<Eigen::Index>(static_cast<Eigen::Index>(q) - 1, 0,
+                                                    static_cast<Eigen::Index>(nodes_.size()) - 4);
+    const double t = q - static_cast<double>(k);  // nodes k … k + 3 sit at t = 0 … 3
+    const double w0 = -(t - 1) * (t - 2) * (t - 3) / 6, w1 = t * (t - 2) * (t - 3) / 2,
+                 w2 = -t * (t - 1) * (t - 3) / 2, w3 = t * (t - 1) * (t - 2) / 6;
+    const auto at = [&](Eigen::Index j) -> const Eigen::ArrayXcd& { return nodes_[static_cast<std::size_t>(j)]; };
+    return w0 * at(k) + w1 * at(k + 1) + w2 * at(k + 2) + w3 * at(k + 3);
+  }
+
+  std::shared_ptr<const EffectContext> c_;
+  ParameterPrior prior_;
+  std::function<void(SimulatedChange&, const double* theta)> change_;
+  mutable std::once_flag built_;
+  mutable std::vector<Eigen::ArrayXcd> nodes_;
+  mutable double v_lo_ = 0.0, step_ = 1.0;
+};
+
+namespace {
+
 EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
                                  std::function<void(SimulatedChange&, const double*)> change) {
-  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c, {}};
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c, {}, {}};
   e.predict = [c, change](const double* t) {
     SimulatedChange s = no_change(*c);
     change(s, t);
@@ -65,7 +155,7 @@ EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> p
 
 EffectCandidate sample_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
                               std::function<Eigen::ArrayXcd(const Eigen::ArrayXcd&, const double*)> apply) {
-  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c, {}};
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c, {}, {}};
   e.predict = [c, apply](const double* t) { return plain(apply(c->y_sim, t)); };
   return e;
 }
@@ -82,7 +172,7 @@ EffectCandidate chain_effect(std::string name, std::vector<ParameterPrior> prior
                       d.mic_ratio *= own.mic_ratio;
                       d.reference_plane_m += own.reference_plane_m;
                     },
-                    {}, c, {}};
+                    {}, c, {}, {}};
   e.predict = [c, deviation](const double* t) { return plain(c->chain->measure(deviation(t))); };
   return e;
 }
@@ -143,7 +233,7 @@ EffectCandidate heteroscedastic_noise(const ContextPtr& c) {
           {},
           {},
           shape,
-          c, {}};
+          c, {}, {}};
 }
 
 EffectCandidate edge_gap(const ContextPtr& c) {
@@ -202,89 +292,6 @@ EffectCandidate frequency_scale(const ContextPtr& c, const ParameterPrior& prior
   e.predict = [c](const double* t) { return plain(c->sim.admittance(c->f * t[0])); };
   return e;
 }
-
-/// The simulated side under one simulated-stage member of one parameter θ (a catalogue ratio, an air
-/// gap, a frequency ratio), tabulated on the data grid: a joint candidate that holds such a member
-/// evaluates it tens of thousands of times, and re-evaluating a layered SPEC costs far more than the
-/// other members. y(θ) is smooth in the prior's coordinate v (ln θ for a log-uniform prior, θ for a
-/// uniform one): the table holds y at equally spaced v over the prior, read by 4-point Lagrange
-/// interpolation (one-sided in the end cells). Built on first use from 33 nodes, doubled (the new
-/// nodes are the old midpoints, where the interpolation error of the coarser table is largest) until
-/// every midpoint agrees with the exact side to kSimulatedTableTolerance of the rms simulated
-/// admittance (tested in tests/diagnosis/test_combined_effects.cpp); a side needing more than
-/// kSimulatedTableMaxNodes nodes is not tabulated (evaluated exactly each time).
-class SimulatedTable {
- public:
-  static constexpr double kSimulatedTableTolerance = 1e-9;
-  static constexpr int kSimulatedTableMaxNodes = 1025;
-
-  SimulatedTable(std::shared_ptr<const EffectContext> c, EffectCandidate member)
-      : c_(std::move(c)), member_(std::move(member)) {}
-
-  /// The simulated side at θ (to the tolerance above).
-  Eigen::ArrayXcd operator()(double theta) const {
-    std::call_once(built_, [this] { build(); });
-    if (nodes_.empty()) return exact(theta);
-    return lookup(member_.priors.front().shape == ParameterPrior::Shape::log_uniform ? std::log(theta) : theta);
-  }
-
-  /// Nodes of the table once built (0 when not tabulated).
-  std::size_t nodes() const {
-    std::call_once(built_, [this] { build(); });
-    return nodes_.size();
-  }
-
- private:
-  Eigen::ArrayXcd exact(double theta) const {
-    SimulatedChange s = no_change(*c_);
-    member_.change(s, &theta);
-    return simulated(*c_, s);
-  }
-  double theta_at(double v) const {
-    return member_.priors.front().shape == ParameterPrior::Shape::log_uniform ? std::exp(v) : v;
-  }
-  void build() const {
-    const ParameterPrior& p = member_.priors.front();
-    const bool log = p.shape == ParameterPrior::Shape::log_uniform;
-    v_lo_ = log ? std::log(p.lo) : p.lo;
-    const double v_hi = log ? std::log(p.hi) : p.hi;
-    const double scale = std::sqrt(c_->y_sim.abs2().mean());
-    std::vector<Eigen::ArrayXcd> nodes;
-    for (int k = 0; k < 33; ++k) nodes.push_back(exact(theta_at(v_lo_ + (v_hi - v_lo_) * k / 32.0)));
-    while (nodes.size() <= static_cast<std::size_t>(kSimulatedTableMaxNodes)) {
-      nodes_ = std::move(nodes);
-      step_ = (v_hi - v_lo_) / static_cast<double>(nodes_.size() - 1);
-      nodes.clear();
-      double worst = 0.0;
-      for (std::size_t k = 0; k + 1 < nodes_.size(); ++k) {
-        const double v = v_lo_ + (static_cast<double>(k) + 0.5) * step_;
-        Eigen::ArrayXcd mid = exact(theta_at(v));
-        worst = std::max(worst, (lookup(v) - mid).abs().maxCoeff());
-        nodes.push_back(nodes_[k]);
-        nodes.push_back(std::move(mid));
-      }
-      nodes.push_back(nodes_.back());
-      if (worst <= kSimulatedTableTolerance * scale) return;
-    }
-    nodes_.clear();  // too wiggly to tabulate within the budget: exact every time
-  }
-  Eigen::ArrayXcd lookup(double v) const {
-    const double q = std::clamp((v - v_lo_) / step_, 0.0, static_cast<double>(nodes_.size() - 1));
-    const Eigen::Index k = std::clamp<Eigen::Index>(static_cast<Eigen::Index>(q) - 1, 0,
-                                                    static_cast<Eigen::Index>(nodes_.size()) - 4);
-    const double t = q - static_cast<double>(k);  // nodes k … k + 3 sit at t = 0 … 3
-    const double w0 = -(t - 1) * (t - 2) * (t - 3) / 6, w1 = t * (t - 2) * (t - 3) / 2,
-                 w2 = -t * (t - 1) * (t - 3) / 2, w3 = t * (t - 1) * (t - 2) / 6;
-    const auto at = [&](Eigen::Index j) -> const Eigen::ArrayXcd& { return nodes_[static_cast<std::size_t>(j)]; };
-    return w0 * at(k) + w1 * at(k + 1) + w2 * at(k + 2) + w3 * at(k + 3);
-  }
-
-  std::shared_ptr<const EffectContext> c_;
-  EffectCandidate member_;
-  mutable std::once_flag built_;
-  mutable std::vector<Eigen::ArrayXcd> nodes_;
-  mutable double v_lo_ = 0.0, step_ = 1.0;
-};
 
 /// The composition of combine_effects; `members` sorted by stage, then candidate order, so the simulated
 /// side is changed first, then the sample effects act on it, then the chain measures it.
@@ -365,6 +372,9 @@ std::vector<EffectCandidate> effect_candidates(const Eigen::ArrayXd& f_hz, const
   if (const auto prior = frequency_scale_prior(*c)) out.push_back(frequency_scale(c, *prior));
   if (layered)
     for (const auto& p : spec_parameters(*layered)) out.push_back(material(c, p));
+  for (auto& e : out)
+    if (e.stage == EffectStage::simulated && e.priors.size() == 1)
+      e.table = std::make_shared<const SimulatedTable>(c, e.priors.front(), e.change);
   return out;
 }
 
@@ -398,7 +408,8 @@ EffectCandidate combine_effects(const std::vector<const EffectCandidate*>& membe
   // One simulated member of one parameter (sorted first): tabulated (SimulatedTable above).
   std::shared_ptr<const SimulatedTable> table;
   if (sorted[0].stage == EffectStage::simulated && sorted[0].priors.size() == 1 && sorted[1].stage != EffectStage::simulated)
-    table = std::make_shared<const SimulatedTable>(out.context, sorted[0]);
+    table = sorted[0].table ? sorted[0].table
+                            : std::make_shared<const SimulatedTable>(out.context, sorted[0].priors.front(), sorted[0].change);
   out.predict = [c = out.context, sorted, offset, table](const double* t) {
     return compose(*c, sorted, offset, table.get(), t);
   };

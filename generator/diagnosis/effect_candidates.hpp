@@ -79,6 +79,7 @@ struct SimulatedChange {
 };
 
 struct EffectContext;  ///< what the candidates of one diagnosis share (effect_candidates.cpp)
+class SimulatedTable;  ///< a simulated side tabulated over one parameter's prior (effect_candidates.cpp)
 
 struct EffectCandidate {
   std::string name;  ///< the documented effect name ("material" for every catalogue parameter)
@@ -96,6 +97,10 @@ struct EffectCandidate {
   /// (diagnosis/reference_prior.hpp; set by the combined search from earlier posteriors): the sampler
   /// draws u from q and weighs the likelihood by 1/q, the same evidence (effect_model).
   std::vector<ReferenceDensity> reference;
+  /// A simulated-stage effect of one parameter: its simulated side tabulated over the prior, for the
+  /// joint candidates that hold it (combine_effects). Built on first use and shared by every joint
+  /// candidate of the diagnosis, so built once however many rounds of the combined search use it.
+  std::shared_ptr<const SimulatedTable> table;
 
   /// The name, and for material the parameter ("material 1.sigma"): unique among the candidates.
   std::string label() const;

@@ -79,19 +79,22 @@ struct LeaderShare {
 /// quadrature candidate, then the remaining sampled ones. A sampled run may wait for the leader, which
 /// needs every quadrature candidate done; at most workers − 1 sampled runs start before the last of them,
 /// so one worker is always free for them. Cost: dimension × the time of one likelihood call (timing only
-/// orders the work; it changes no result).
+/// orders the work; it changes no result), timed at the second call: the first builds what a candidate
+/// builds on first use (a simulated member's table), on all workers.
 std::vector<std::size_t> schedule(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
                                   const std::vector<std::size_t>& cheap, std::vector<std::size_t> sampled, int threads) {
-  std::vector<double> cost(candidates.size(), 0.0);
-  for (std::size_t i : sampled) {
+  const auto call_at_centre = [&](std::size_t i) {
     const Model model = effect_model(candidates[i], likelihood);
     std::vector<double> u(static_cast<std::size_t>(model.dim()), 0.5), theta(u.size());
     model.prior_transform(u.data(), theta.data());
     const auto start = std::chrono::steady_clock::now();
     (void)model.log_likelihood(theta.data());
-    cost[i] = static_cast<double>(model.dim()) *
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
+    return static_cast<double>(model.dim()) *
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  run_in_parallel(sampled, threads, [&](std::size_t i) { (void)call_at_centre(i); });
+  std::vector<double> cost(candidates.size(), 0.0);
+  for (std::size_t i : sampled) cost[i] = call_at_centre(i);
   std::stable_sort(sampled.begin(), sampled.end(), [&](auto a, auto b) { return cost[a] > cost[b]; });
   const std::size_t ahead = std::min(sampled.size(), worker_count(threads, candidates.size()) - 1);
   std::vector<std::size_t> queue(sampled.begin(), sampled.begin() + static_cast<std::ptrdiff_t>(ahead));
