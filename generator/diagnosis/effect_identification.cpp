@@ -11,12 +11,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <optional>
 
 namespace admitgen::diagnosis {
 namespace {
@@ -103,6 +105,12 @@ std::vector<std::size_t> schedule(const std::vector<EffectCandidate>& candidates
   return queue;
 }
 
+/// Whether a candidate's evidence is sampled (else closed form or quadrature; evaluate()).
+bool is_sampled(const EffectCandidate& e, const IdentificationSettings& settings) {
+  const std::size_t dim = e.priors.size();
+  return !(dim == 0 || (dim == 1 && settings.use_quadrature));
+}
+
 EffectResult start_result(const EffectCandidate& e) {
   EffectResult r;
   r.name = e.name;
@@ -111,10 +119,47 @@ EffectResult start_result(const EffectCandidate& e) {
   return r;
 }
 
-/// evaluate_candidates with candidate i on seed stream streams[i].
+/// Called by each job of evaluate() at its end, on its worker: i and its result (null when it threw).
+using JobEnd = std::function<void(std::size_t, const EffectResult*)>;
+
+/// evaluate_candidates with candidate i on seed stream streams[i]; `then` (may be empty) ends every job.
 std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
                                    const IdentificationSettings& settings, double log_z_floor,
-                                   const std::vector<std::uint64_t>& streams, Progress& progress);
+                                   const std::vector<std::uint64_t>& streams, Progress& progress,
+                                   const JobEnd& then = {});
+
+/// Whether an early-stop bound lies more than settings.early_stop_deciban below the leader.
+using BelowLeader = std::function<bool(double bound)>;
+
+/// The nested-sampling run of a sampled candidate on seed stream `stream`, into r. Once early stop is
+/// allowed (settings.early_stop_deciban > 0) the run stops when below_leader(its bound), which may block
+/// until the leader is known. `abandon` (may be empty), asked after every death, ends the run
+/// unfinished: returns false then, and r is not a result.
+bool run_sampled(const EffectCandidate& candidate, const EffectLikelihood& likelihood,
+                 const IdentificationSettings& settings, std::uint64_t stream, const BelowLeader& below_leader,
+                 const std::function<bool()>& abandon, const NestedProgressFn& status, EffectResult& r) {
+  r.method = "nested_sampling";
+  NestedSettings sampler = settings.sampler;
+  sampler.seed = Comparison::job_seed(settings.sampler.seed, stream);
+  bool abandoned = false;
+  const NestedStopFn stop = [&](const NestedStatus& s) {
+    if (abandon && abandon()) {
+      abandoned = true;
+      return true;
+    }
+    if (settings.early_stop_deciban <= 0.0 || !early_stop_allowed(s, sampler.live)) return false;
+    const double bound = early_stop_bound(s);
+    if (!below_leader(bound)) return false;
+    r.stopped_early = true;
+    r.log_z_bound = bound;
+    return true;
+  };
+  const Model model = effect_model(candidate, likelihood);
+  const NestedRun run = run_nested_sampling(model, sampler, status, stop);
+  if (abandoned) return false;
+  take_run(run, model, candidate, r);
+  return true;
+}
 
 }  // namespace
 
@@ -193,13 +238,10 @@ namespace {
 
 std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
                                    const IdentificationSettings& settings, double log_z_floor,
-                                   const std::vector<std::uint64_t>& streams, Progress& progress) {
+                                   const std::vector<std::uint64_t>& streams, Progress& progress, const JobEnd& then) {
   std::vector<EffectResult> results(candidates.size());
   std::vector<std::size_t> cheap, sampled;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const std::size_t dim = candidates[i].priors.size();
-    (dim == 0 || (dim == 1 && settings.use_quadrature) ? cheap : sampled).push_back(i);
-  }
+  for (std::size_t i = 0; i < candidates.size(); ++i) (is_sampled(candidates[i], settings) ? sampled : cheap).push_back(i);
   Leader leader(cheap.size(), log_z_floor);
   const auto by_quadrature = [&](std::size_t i, EffectResult& r) {
     LeaderShare share{leader};  // reports this evidence (−∞ if it throws) when it goes out of scope
@@ -209,21 +251,9 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
     share.log_z = r.log_z;
   };
   const auto by_sampling = [&](std::size_t i, EffectResult& r, const NestedProgressFn& status) {
-    r.method = "nested_sampling";
-    NestedSettings sampler = settings.sampler;
-    sampler.seed = Comparison::job_seed(settings.sampler.seed, streams[i]);
-    NestedStopFn stop;
-    if (settings.early_stop_deciban > 0.0)
-      stop = [&](const NestedStatus& s) {
-        if (!early_stop_allowed(s, sampler.live)) return false;
-        const double bound = early_stop_bound(s);
-        if (deciban(bound, leader.wait()) >= -settings.early_stop_deciban) return false;
-        r.stopped_early = true;
-        r.log_z_bound = bound;
-        return true;
-      };
-    const Model model = effect_model(candidates[i], likelihood);
-    take_run(run_nested_sampling(model, sampler, status, stop), model, candidates[i], r);
+    run_sampled(
+        candidates[i], likelihood, settings, streams[i],
+        [&](double bound) { return deciban(bound, leader.wait()) < -settings.early_stop_deciban; }, {}, status, r);
   };
   // The work of a candidate for the time left: a quadrature candidate counts 1, a sampled one 10 per parameter.
   std::vector<ComparisonJob> jobs;
@@ -234,9 +264,15 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
   const std::vector<TaskTime> times = comparison.run(
       jobs, schedule(candidates, likelihood, cheap, sampled, settings.threads),
       [&](std::size_t i, const NestedProgressFn& status) {
-        results[i] = start_result(candidates[i]);
-        if (std::find(cheap.begin(), cheap.end(), i) != cheap.end()) by_quadrature(i, results[i]);
-        else by_sampling(i, results[i], status);
+        try {
+          results[i] = start_result(candidates[i]);
+          if (std::find(cheap.begin(), cheap.end(), i) != cheap.end()) by_quadrature(i, results[i]);
+          else by_sampling(i, results[i], status);
+        } catch (...) {
+          if (then) then(i, nullptr);
+          throw;
+        }
+        if (then) then(i, &results[i]);
       });
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     results[i].seconds = times[i].seconds;
@@ -244,6 +280,128 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
   }
   return results;
 }
+
+
+/// The candidate a contender's full run samples: the screened candidate with reference densities built
+/// on its screening run's posterior (the same evidence, docs/method.md).
+EffectCandidate full_candidate(const EffectCandidate& candidate, const EffectResult& screened) {
+  EffectCandidate out = candidate;
+  if (out.priors.size() >= 2) out.reference = reference_densities(out.priors, screened.parameters, kReferenceShareJoint);
+  return out;
+}
+
+/// Full runs of contenders started while their round's screening still runs (evaluate_contenders), so
+/// that a round's full run no longer runs alone after its screening with the other workers idle. Once
+/// half of the round's screenings have ended, a worker that ends a screening job goes on to the full run
+/// of the best screened candidate in contention (within kScreenDeciban of the best screened so far and
+/// of decisive) that has none yet, while the other workers screen the rest; waiting for half keeps the
+/// runs that a later screening overtakes rare. The run is exactly the one the round would run after its
+/// screening: the same candidate, seed stream and reference densities, and its early stop answers as
+/// the leader of the round's full runs would (below_leader). A run whose candidate falls out of
+/// contention as more screenings end is abandoned: contention only narrows, so it would not have run.
+/// So the results are those of screening first and full runs after, at any thread count; only where the
+/// time goes changes. At most workers − 1 such runs go at once, so a worker is always left to screen
+/// (a full run may wait for the last screening).
+class EarlyFullRuns {
+ public:
+  EarlyFullRuns(const std::vector<EffectCandidate>& candidates, const EffectLikelihood& likelihood,
+                const IdentificationSettings& settings, double log_z_reference, std::uint64_t first_stream)
+      : candidates_(candidates), likelihood_(likelihood), settings_(settings), first_stream_(first_stream),
+        reference_(log_z_reference), floor_(log_z_reference),
+        target_(log_z_reference + kDecisiveDeciban * std::log(10.0) / 10.0), done_(candidates.size(), false),
+        log_z_(candidates.size(), -std::numeric_limits<double>::infinity()), abandoned_(candidates.size()),
+        runs_(candidates.size()), started_(candidates.size(), false), running_(candidates.size(), false),
+        posterior_(candidates.size()),
+        slots_(static_cast<int>(worker_count(settings.threads, candidates.size())) - 1) {}
+
+  /// The end of candidate i's screening job (r null when it threw). Once half the screenings have ended,
+  /// the worker goes on to the full run of the best screened candidate in contention that has none yet.
+  void screened(std::size_t i, const EffectResult* r) {
+    std::size_t best = candidates_.size();
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++screened_;
+      done_[i] = true;
+      if (r) {
+        log_z_[i] = r->log_z;
+        target_ = std::max(target_, r->log_z);
+        posterior_[i] = r->parameters;
+      }
+      for (std::size_t j = 0; j < candidates_.size(); ++j)  // the screened ones that fell behind
+        if (std::isfinite(log_z_[j]) && !in_contention(j)) abandoned_[j] = true;
+      if (screened_ == candidates_.size()) {
+        for (std::size_t j = 0; j < candidates_.size(); ++j)
+          if (!is_sampled(candidates_[j], settings_) && in_contention(j)) floor_ = std::max(floor_, log_z_[j]);
+        all_screened_.notify_all();
+      }
+      // An abandoned run ends at its next death: it holds no slot.
+      int going = 0;
+      for (std::size_t j = 0; j < candidates_.size(); ++j) going += started_[j] && running_[j] && !abandoned_[j];
+      if (2 * screened_ < candidates_.size() || going >= slots_) return;
+      for (std::size_t j = 0; j < candidates_.size(); ++j)
+        if (done_[j] && !started_[j] && is_sampled(candidates_[j], settings_) && in_contention(j) &&
+            (best == candidates_.size() || log_z_[j] > log_z_[best]))
+          best = j;
+      if (best == candidates_.size()) return;
+      started_[best] = running_[best] = true;
+    }
+    EffectResult screened_run;
+    screened_run.parameters = posterior_[best];
+    const EffectCandidate full = full_candidate(candidates_[best], screened_run);
+    EffectResult run = start_result(full);
+    const bool finished = run_sampled(
+        full, likelihood_, settings_, first_stream_ + best, [this](double bound) { return below_leader(bound); },
+        [this, best] { return abandoned_[best].load(); }, {}, run);
+    std::lock_guard<std::mutex> lock(mutex_);
+    running_[best] = false;
+    if (finished) runs_[best] = std::move(run);
+  }
+
+  /// Candidate i's full run if it ran to its end here (call after every screening job has returned).
+  std::optional<EffectResult>& run(std::size_t i) { return runs_[i]; }
+
+ private:
+  /// Within kScreenDeciban of the target (needs mutex_).
+  bool in_contention(std::size_t j) const { return deciban(log_z_[j], target_) >= -kScreenDeciban; }
+  /// Whether `bound` lies more than early_stop_deciban below the leader of the round's full runs:
+  /// log_z_reference or the largest evidence of the quadrature candidates if that one stays in contention.
+  /// Decided as soon as both possible leaders give the same answer (every quadrature candidate screened:
+  /// the schedule runs them first); else it waits for the last screening.
+  bool below_leader(double bound) {
+    const auto below = [&](double leader) { return deciban(bound, leader) < -settings_.early_stop_deciban; };
+    std::unique_lock<std::mutex> lock(mutex_);
+    double q_max = -std::numeric_limits<double>::infinity();
+    bool known = true;
+    for (std::size_t j = 0; j < candidates_.size(); ++j)
+      if (!is_sampled(candidates_[j], settings_)) {
+        known = known && done_[j];
+        q_max = std::max(q_max, log_z_[j]);
+      }
+    if (known) {
+      // Out of contention now is out for good (the target only rises): the leader is log_z_reference.
+      if (deciban(q_max, target_) < -kScreenDeciban) return below(reference_);
+      if (below(reference_) == below(std::max(reference_, q_max))) return below(reference_);
+    }
+    all_screened_.wait(lock, [this] { return screened_ == candidates_.size(); });
+    return below(floor_);
+  }
+
+  const std::vector<EffectCandidate>& candidates_;
+  const EffectLikelihood& likelihood_;
+  const IdentificationSettings& settings_;
+  std::uint64_t first_stream_;
+  std::mutex mutex_;
+  std::condition_variable all_screened_;
+  std::size_t screened_ = 0;
+  double reference_, floor_, target_;  ///< log_z_reference; the leader once all are screened; the target so far
+  std::vector<bool> done_;             ///< screened
+  std::vector<double> log_z_;
+  std::vector<std::atomic<bool>> abandoned_;
+  std::vector<std::optional<EffectResult>> runs_;
+  std::vector<bool> started_, running_;  ///< its full run begun; going on
+  std::vector<std::vector<ParameterSummary>> posterior_;  ///< of its screening run
+  int slots_;
+};
 
 }  // namespace
 
@@ -254,32 +412,37 @@ std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>
     return evaluate_candidates(candidates, likelihood, settings, log_z_reference, first_stream, progress);
   IdentificationSettings screening = settings;
   screening.sampler.live = std::max(settings.screen_live, 2);
+  EarlyFullRuns early(candidates, likelihood, settings, log_z_reference, first_stream);
+  std::vector<std::uint64_t> screen_streams(candidates.size());
+  std::iota(screen_streams.begin(), screen_streams.end(), first_stream);
   std::vector<EffectResult> results =
-      evaluate_candidates(candidates, likelihood, screening, log_z_reference, first_stream, progress);
+      evaluate(candidates, likelihood, screening, log_z_reference, screen_streams, progress,
+               [&](std::size_t i, const EffectResult* r) { early.screened(i, r); });
   double target = log_z_reference + kDecisiveDeciban * std::log(10.0) / 10.0;
   for (const auto& r : results) target = std::max(target, r.log_z);
-  std::vector<std::size_t> contenders;
+  std::vector<std::size_t> contenders, late;
   std::vector<EffectCandidate> full;
+  std::vector<std::uint64_t> streams;  // each contender keeps its seed stream first_stream + i
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (results[i].method == "nested_sampling") results[i].method = "screened";
     if (deciban(results[i].log_z, target) < -kScreenDeciban) continue;
     contenders.push_back(i);
-    full.push_back(candidates[i]);
-    // Its full run samples from the screening run's posterior (the same evidence, docs/method.md).
-    if (full.back().priors.size() >= 2)
-      full.back().reference = reference_densities(full.back().priors, results[i].parameters, kReferenceShareJoint);
+    if (early.run(i)) continue;  // its full run went while the others were screened (EarlyFullRuns)
+    late.push_back(i);
+    full.push_back(full_candidate(candidates[i], results[i]));
+    streams.push_back(first_stream + i);
   }
-  // Each contender keeps its seed stream first_stream + i, as without screening.
-  std::vector<std::uint64_t> streams;
-  for (std::size_t i : contenders) streams.push_back(first_stream + i);
   std::vector<EffectResult> runs = evaluate(full, likelihood, settings, log_z_reference, streams, progress);
-  for (std::size_t k = 0; k < contenders.size(); ++k) {
-    EffectResult& r = runs[k];
-    const EffectResult& screened = results[contenders[k]];
-    r.seconds += screened.seconds;
-    r.cpu_seconds += screened.cpu_seconds;
+  for (std::size_t k = 0; k < late.size(); ++k) early.run(late[k]) = std::move(runs[k]);
+  for (std::size_t i : contenders) {
+    // The early runs' time is already in their screening job's.
+    EffectResult& r = *early.run(i);
+    const EffectResult& screened = results[i];
+    const bool ran_late = std::find(late.begin(), late.end(), i) != late.end();
+    r.seconds = ran_late ? r.seconds + screened.seconds : screened.seconds;
+    r.cpu_seconds = ran_late ? r.cpu_seconds + screened.cpu_seconds : screened.cpu_seconds;
     r.calls += screened.calls;
-    results[contenders[k]] = std::move(r);
+    results[i] = std::move(r);
   }
   return results;
 }
