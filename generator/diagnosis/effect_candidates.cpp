@@ -66,7 +66,7 @@ SimulatedChange no_change(const EffectContext& c) {
 /// kSimulatedTableMaxNodes nodes is not tabulated (evaluated exactly each time).
 class SimulatedTable {
  public:
-  static constexpr double kSimulatedTableTolerance = 1e-9;
+  static constexpr double kSimulatedTableTolerance = 1e-8;
   static constexpr int kSimulatedTableMaxNodes = 1025;
 
   /// The side under `change` at θ, θ over `prior` (the member's own prior and change).

@@ -408,7 +408,7 @@ class EarlyFullRuns {
 std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>& candidates,
                                               const EffectLikelihood& likelihood, const IdentificationSettings& settings,
                                               double log_z_reference, std::uint64_t first_stream, Progress& progress) {
-  if (candidates.size() < 2 || settings.screen_live >= settings.sampler.live)
+  if (settings.screen_live >= settings.sampler.live)
     return evaluate_candidates(candidates, likelihood, settings, log_z_reference, first_stream, progress);
   IdentificationSettings screening = settings;
   screening.sampler.live = std::max(settings.screen_live, 2);

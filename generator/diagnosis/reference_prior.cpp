@@ -35,12 +35,21 @@ double ReferenceDensity::cdf(double u) const {
 
 double ReferenceDensity::inverse_cdf(double v) const {
   if (uniform()) return v;
-  double lo = 0.0, hi = 1.0;
-  for (int i = 0; i < 52; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (cdf(mid) < v ? lo : hi) = mid;
+  // Newton's method on Q(u) = v (Q' = q ≥ ε > 0), kept inside the bracket [lo, hi] that every evaluation
+  // narrows; a step that leaves it is replaced by bisection. Converges quadratically to a few ulp of u
+  // in about five evaluations where bisection to 2⁻⁵² takes 52.
+  double lo = 0.0, hi = 1.0, u = std::clamp(v, 0.0, 1.0);
+  for (int i = 0; i < 100; ++i) {
+    const double f = cdf(u) - v;
+    if (f == 0.0) return u;
+    (f < 0.0 ? lo : hi) = u;
+    double next = u - f / std::exp(log_density(u));
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool converged = std::abs(next - u) <= 1e-15;
+    u = next;
+    if (converged || hi - lo <= 1e-15) break;
   }
-  return 0.5 * (lo + hi);
+  return u;
 }
 
 double ReferenceDensity::log_density(double u) const {

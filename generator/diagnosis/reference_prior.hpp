@@ -29,13 +29,14 @@ class ReferenceDensity {
   static ReferenceDensity from_interval(double u_lo, double u_hi, double widening, double uniform_share);
 
   bool uniform() const { return share_ >= 1.0; }
-  /// u = Q⁻¹(v), Q the CDF of q (bisection to 2⁻⁵² of the cube).
+  /// u = Q⁻¹(v), Q the CDF of q (safeguarded Newton, to about 1e-15 of the cube).
   double inverse_cdf(double v) const;
   /// ln q(u).
   double log_density(double u) const;
+  /// Q(u), the CDF of q.
+  double cdf(double u) const;
 
  private:
-  double cdf(double u) const;
   double centre_ = 0.5, width_ = 1.0, share_ = 1.0;
   double phi_lo_ = 0.0, mass_ = 1.0;  ///< Φ(−c/s) and Φ((1 − c)/s) − Φ(−c/s)
 };

@@ -104,16 +104,16 @@ TEST_CASE("material candidates: one per numeric SPEC parameter, equal to the SPE
   CHECK(relative_difference(combined.predict(reordered).y,
                             s.synth({"temperature:delta_k=4"},
                                     "jca(phi=0.94, sigma=50000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + "
-                                    "air(d=20mm)")) < 2e-9);  // material from its table
+                                    "air(d=20mm)")) < 2e-8);  // material from its table (1e-8 of rms|y_sim|)
 }
 
-TEST_CASE("a simulated member combined with others is read from its table to 1e-9 of the simulated admittance") {
+TEST_CASE("a simulated member combined with others is read from its table to 1e-8 of the simulated admittance") {
   // combine_effects tabulates a single one-parameter simulated member (material, air_gap,
   // frequency_scale) over its prior and interpolates; the build doubles the nodes until every midpoint
-  // is within 1e-9 of rms|y_sim|. Reference: the member alone (re-evaluated exactly), then the frame
+  // is within 1e-8 of rms|y_sim|. Reference: the member alone (re-evaluated exactly), then the frame
   // resonance's closed form, at 41 points across each prior (ends included), on the bench's grid
   // (50 Hz-4 kHz) and spec, where a 30 mm JCA layer on 20 mm of air makes the thickness ratios the
-  // hardest to tabulate. Tolerance 2e-9 of rms|y_sim|: the table's 1e-9 checked at the midpoints, where
+  // hardest to tabulate. Tolerance 2e-8 of rms|y_sim|: the table's 1e-8 checked at the midpoints, where
   // a cubic's error is largest, with room for the interpolation error between midpoint and node.
   Setup s;
   s.spec = "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + air(d=20mm)";
@@ -137,7 +137,7 @@ TEST_CASE("a simulated member combined with others is read from its table to 1e-
     }
     CAPTURE(c.label());
     MESSAGE(c.label(), ": largest difference ", worst, " of rms|y_sim|");
-    CHECK(worst <= 2e-9);
+    CHECK(worst <= 2e-8);
     ++tabulated;
   }
   CHECK(tabulated == 8);  // 7 catalogue parameters and frequency_scale

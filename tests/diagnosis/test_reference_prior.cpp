@@ -37,6 +37,11 @@ TEST_CASE("reference density: normalised on [0, 1], its inverse CDF inverts its 
       const double u = q.inverse_cdf(v);
       CAPTURE(v);
       CHECK(std::abs(integral(q, 0.0, u, 4000) - v) < 1e-7);
+      // Against bisection on Q to 2⁻⁵²: Q is evaluated to a few ulp (≤ 1e-15) and Q' = q ≥ ε ≥ 0.1, so the
+      // two roots differ by at most 1e-15/0.1 plus Newton's stopping step 1e-15: 2e-14 bounds both.
+      double lo = 0.0, hi = 1.0;
+      for (int i = 0; i < 52; ++i) (q.cdf(0.5 * (lo + hi)) < v ? lo : hi) = 0.5 * (lo + hi);
+      CHECK(std::abs(u - 0.5 * (lo + hi)) < 2e-14);
     }
   }
   CHECK(diagnosis::ReferenceDensity().uniform());
