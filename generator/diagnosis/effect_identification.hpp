@@ -159,8 +159,10 @@ std::vector<EffectResult> evaluate_candidates(const std::vector<EffectCandidate>
 /// "nested_sampling"; the others keep method "screened"). A candidate left screened is more than 20 dB
 /// (5 standard errors of the screening) below the best and below decisive, so it could neither be
 /// picked nor make the pick decisive. A contender's full run samples from reference densities built on
-/// its screening run's posterior (reference_densities, kReferenceShareJoint). With fewer candidates than
-/// two, or screen_live ≥ live, every candidate runs in full.
+/// its screening run's posterior (reference_densities, kReferenceShareJoint). A lone candidate is screened
+/// too: a white residual's noise round, one swap, one model of a backward step, which in full would run
+/// with every other worker idle. Full runs may start before the screening ends (effect_identification.cpp,
+/// EarlyFullRuns), with the same results. With screen_live ≥ live every candidate runs in full.
 std::vector<EffectResult> evaluate_contenders(const std::vector<EffectCandidate>& candidates,
                                               const EffectLikelihood& likelihood, const IdentificationSettings& settings,
                                               double log_z_reference, std::uint64_t first_stream, Progress& progress);
