@@ -51,6 +51,27 @@ struct Search {
   double log_z_none = 0.0;
   std::uint64_t next_stream = 0;  ///< the first seed stream no run has used yet
   std::vector<std::size_t> dropped;  ///< candidates the backward step took out (not offered again)
+  std::vector<Eigen::ArrayXcd> corrections;  ///< each single effect's ŷ − y_sim at its best point (mimics())
+
+  /// The `count` offered candidates whose single-effect correction is most like candidate k's: the
+  /// largest |cos| between ŷ_i − y_sim and ŷ_k − y_sim (real inner product over the points), each at its
+  /// single-effect best point. Two effects that correct the gap in the same way are what the data tell
+  /// apart least (docs/diagnosis.md, "Mimic swap").
+  std::vector<std::size_t> mimics(const std::vector<ExplanationStep>& steps, std::size_t k, std::size_t count) const {
+    const auto dot = [](const Eigen::ArrayXcd& a, const Eigen::ArrayXcd& b) { return (a.conjugate() * b).real().sum(); };
+    std::vector<std::pair<double, std::size_t>> alike;
+    const double norm_k = std::sqrt(dot(corrections[k], corrections[k]));
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      if (!offered(steps, i)) continue;
+      const double norm_i = std::sqrt(dot(corrections[i], corrections[i]));
+      if (!(norm_i > 0.0 && norm_k > 0.0)) continue;
+      alike.emplace_back(std::abs(dot(corrections[i], corrections[k])) / (norm_i * norm_k), i);
+    }
+    std::stable_sort(alike.begin(), alike.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<std::size_t> out;
+    for (std::size_t j = 0; j < std::min(count, alike.size()); ++j) out.push_back(alike[j].second);
+    return out;
+  }
 
   /// `count` fresh seed streams, the first returned: every batch takes the next block.
   std::uint64_t take_streams(std::size_t count) {
@@ -66,24 +87,25 @@ struct Search {
 
   /// The joint candidate of each list of candidate indices (combine_effects, members in list order),
   /// sampled from the reference densities of what `now` and the single effects know (reference()).
-  std::vector<EffectCandidate> combined(const std::vector<std::vector<std::size_t>>& models,
-                                        const Explanation& now) const {
+  std::vector<EffectCandidate> combined(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
+                                        double share_now = kReferenceShareJoint) const {
     std::vector<EffectCandidate> out;
     for (const auto& m : models) {
       std::vector<const EffectCandidate*> with;
       for (const std::size_t i : m) with.push_back(&candidates[i]);
       out.push_back(combine_effects(with));
-      out.back().reference = reference(m, now);
+      out.back().reference = reference(m, now, share_now);
     }
     return out;
   }
 
   /// One reference density per parameter of the joint model `members` (docs/method.md, "Reference
   /// priors in the combined search"): a member of the explanation `now` from its joint posterior there
-  /// (effect_identification.hpp kReferenceShareJoint), any other from its single-effect posterior
-  /// (kReferenceShareSingle). Empty (the prior)
-  /// for a model of at most one parameter, evaluated by quadrature.
-  std::vector<ReferenceDensity> reference(const std::vector<std::size_t>& members, const Explanation& now) const {
+  /// with uniform share `share_now` (kReferenceShareJoint where it keeps its role, kReferenceShareSingle in
+  /// a swap, where it may move far), any other from its single-effect posterior (kReferenceShareSingle).
+  /// Empty (the prior) for a model of at most one parameter, evaluated by quadrature.
+  std::vector<ReferenceDensity> reference(const std::vector<std::size_t>& members, const Explanation& now,
+                                         double share_now) const {
     std::vector<ReferenceDensity> out;
     for (const std::size_t i : members) {
       const auto at = std::find_if(now.steps.begin(), now.steps.end(),
@@ -92,7 +114,7 @@ struct Search {
           at != now.steps.end()
               ? reference_densities(candidates[i].priors,
                                     now.member_parameters(static_cast<std::size_t>(at - now.steps.begin()), candidates),
-                                    kReferenceShareJoint)
+                                    share_now)
               : reference_densities(candidates[i].priors, singles[i].parameters, kReferenceShareSingle);
       out.insert(out.end(), q.begin(), q.end());
     }
@@ -130,9 +152,11 @@ struct Search {
   }
 
   /// The swaps of a swap pass against the explanation `now`: the question of an addition round (which is
-  /// best, and is it decisive against now), so screened like one (evaluate_contenders).
+  /// best, and is it decisive against now), so screened like one (evaluate_contenders). The members kept
+  /// from `now` sample from its posterior with the uniform share of a single effect: the member swapped in
+  /// may take over part of what they explained.
   std::vector<EffectResult> evaluate_swaps(const std::vector<std::vector<std::size_t>>& models, const Explanation& now) {
-    const std::vector<EffectCandidate> tried = combined(models, now);
+    const std::vector<EffectCandidate> tried = combined(models, now, kReferenceShareSingle);
     return with_gaps(models, tried,
                      evaluate_contenders(tried, likelihood, settings, now.joint.log_z, take_streams(models.size()), progress));
   }
@@ -169,6 +193,21 @@ struct Search {
   }
 };
 
+/// Evaluates the explanations `swapped` (each `out` with one member replaced), screened like an addition
+/// round, and keeps the best when it is decisive (≥ 20 dB) against `out`, restating its steps and `prefix`.
+/// Returns whether one was kept (false also when there is none).
+bool keep_best_swap(Search& search, const std::vector<std::vector<std::size_t>>& swapped, Explanation& out,
+                    EffectResult& prefix) {
+  if (swapped.empty()) return false;
+  std::vector<EffectResult> results = search.evaluate_swaps(swapped, out);
+  out.rounds.push_back(results);
+  const std::size_t best = best_of(results);
+  if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return false;
+  out.steps = search.restate(swapped[best], results[best], out, prefix);
+  out.joint = results[best];
+  return true;
+}
+
 /// The swap step after an addition that leaves the residual structured: every earlier member in turn
 /// replaced by every candidate still offered (the others and their order kept, all refitted jointly);
 /// the best swap is kept when it is decisive (≥ 20 dB) against the explanation as it stands; the swaps
@@ -189,15 +228,25 @@ void swap_round(Search& search, Explanation& out, EffectResult& prefix) {
         swapped.push_back(members);
         swapped.back()[j] = i;
       }
-    if (swapped.empty()) return;
-    std::vector<EffectResult> results = search.evaluate_swaps(swapped, out);
-    out.rounds.push_back(results);
-    const std::size_t best = best_of(results);
-    if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return;
-    out.steps = search.restate(swapped[best], results[best], out, prefix);
-    out.joint = results[best];
-    if (out.joint.gap_after.whiteness.white) return;
+    if (!keep_best_swap(search, swapped, out, prefix) || out.joint.gap_after.whiteness.white) return;
   }
+}
+
+/// The mimic swap after an addition that leaves the residual white: a white residual ends the additions,
+/// but an explanation can be white and still far from the truth when a member stands in for the effect it
+/// mimics and another member makes up the difference (docs/diagnosis.md, "Mimic swap"). So every earlier
+/// member in turn is replaced by its kMimicsPerMember closest mimics (Search::mimics), screened like an
+/// addition round; the best swap is kept when it is decisive. The backward step then tests every member
+/// of what is kept.
+void mimic_swap(Search& search, Explanation& out, EffectResult& prefix) {
+  const std::vector<std::size_t> members = member_indices(out.steps);
+  std::vector<std::vector<std::size_t>> swapped;
+  for (std::size_t j = 0; j + 1 < members.size(); ++j)
+    for (const std::size_t i : search.mimics(out.steps, members[j], kMimicsPerMember)) {
+      swapped.push_back(members);
+      swapped.back()[j] = i;
+    }
+  keep_best_swap(search, swapped, out, prefix);
 }
 
 /// The backward step after round `round`: each member against the explanation without it (a single
@@ -298,9 +347,15 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
   for (const auto& r : identification.effects) singles[r.candidate] = r;
   const std::size_t n = candidates.size();
   Search search{f_hz, y_real, gap_before, candidates, singles, settings, progress,
-                EffectLikelihood(y_real), identification.log_z_none, n, {}};
+                EffectLikelihood(y_real), identification.log_z_none, n, {}, {}};
   const double log_z_none = search.log_z_none;
   if (identification.effects.empty()) return out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const EffectResult& r = singles[i];
+    search.corrections.push_back(r.best.size() == candidates[i].priors.size()
+                                     ? Eigen::ArrayXcd(candidates[i].predict(r.best.empty() ? nullptr : r.best.data()).y - y_sim)
+                                     : Eigen::ArrayXcd());
+  }
   const std::size_t first = best_of(singles);
   if (deciban(singles[first].log_z, log_z_none) < kDecisiveDeciban) return out;
   out.steps.push_back({first, deciban(singles[first].log_z, log_z_none), singles[first].shrink});
@@ -332,6 +387,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     out.steps.push_back({added[best], bf, out.joint.gap_after.total / results[best].gap_after.total});
     out.joint = results[best];
     if (!out.joint.gap_after.whiteness.white) swap_round(search, out, prefix);
+    else mimic_swap(search, out, prefix);
     backward_step(search, round, prefix, out);
   }
   out.joint.bayes_factor_deciban = deciban(out.joint.log_z, log_z_none);

@@ -16,6 +16,12 @@
 ///   mimics two true ones, which pure addition cannot. Once a swap is kept and the residual is still
 ///   structured, the step repeats over every member, the last added included (it was chosen given
 ///   earlier members that have changed since), at most IdentificationSettings::swap_passes (3) passes.
+///   The members kept in a swap sample from the explanation's posterior with a single effect's uniform
+///   share (they may move far once the member swapped in takes over part of their work).
+///   mimic swap: after an addition that leaves the residual white, every earlier member in turn is
+///   replaced by its kMimicsPerMember closest mimics (the candidates whose single-effect correction
+///   ŷ − y_sim is most nearly parallel to its own); the best is kept if it is decisive. A white
+///   explanation can still hold a mimic with another member making up the difference.
 ///   backward step: after every addition (and its swap), each member is tested against the explanation
 ///   without it by the rule of an addition, BF(E : E − m) ≥ 20 dB. The weakest member that is not
 ///   decisive is dropped (the two explanations are within the decision margin: the one with fewer
@@ -50,6 +56,8 @@ namespace admitgen::diagnosis {
 
 /// Members at most (bounds the search's cost; a gap that needs more is reported as it stands).
 inline constexpr std::size_t kMaxExplanationEffects = 3;
+/// Mimics tried per earlier member in the mimic swap after a white residual (explanation.cpp mimic_swap).
+inline constexpr std::size_t kMimicsPerMember = 1;
 /// Addition rounds at most: each round adds one member, the backward step may take members out again.
 inline constexpr std::size_t kMaxExplanationRounds = 2 * kMaxExplanationEffects;
 /// A member whose share of the squared gap is at least this, and which alone explains at least this

@@ -226,6 +226,23 @@ TEST_SUITE("statistical") {
     CHECK(std::abs(d.verdict.shares[0].share + d.verdict.shares[1].share - d.verdict.explained) < 1e-9);
   }
 
+  // The mimic swap (docs/diagnosis.md, "Mimic swap"): a spacing error of 1 mm with a temperature offset of
+  // 8 K. The search starts from reference_plane (the best single effect: to first order a temperature
+  // offset moves the reference plane and changes the spacing), adds edge_gap and mic_spacing and is white
+  // at reference_plane + edge_gap + mic_spacing. Without the mimic swap that was the verdict (the sweep of
+  // 2026-11-28, docs/diagnosis.md); with it, temperature (the closest mimic of both earlier members) is
+  // swapped in for edge_gap decisively (2348 dB against 2251 dB) and the backward step drops
+  // reference_plane, which temperature now stands for: the truth, named exactly. About 5 s of CPU.
+  TEST_CASE("explanation suite: a white explanation holding a mimic swaps it for the true effect") {
+    const auto c = case_labelled(two_effect_cases(), "two mic_spacing:delta_m=1mm + temperature:delta_k=8");
+    const auto d = diagnosis::run_diagnosis(case_request(c));
+    CHECK(named_exactly(d.verdict, c));
+    CHECK_FALSE(explains(d.verdict, "reference_plane"));
+    CHECK_FALSE(explains(d.verdict, "edge_gap"));
+    REQUIRE(d.verdict.dropped.size() == 1);
+    CHECK(d.verdict.dropped[0].effect == "reference_plane");
+  }
+
   // The main cause (docs/diagnosis.md, "Main cause"): a microphone calibration off by 6 % / 2° with a
   // small absorption dip no effect of the vocabulary makes. The dip leaves structure, so the verdict is
   // unexplained, but mic_mismatch carries most of the squared gap and is named as the main cause.
