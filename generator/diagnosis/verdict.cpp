@@ -64,12 +64,14 @@ std::string describe_decision_rule() {
       "{1} effects); unexplained when that explanation leaves the residual structured (lag-1 |z| >= 3), else the "
       "first effect of the explanation; with a swap step after each addition that leaves structure (an earlier member "
       "replaced by another effect when that is {0:g} deciban better; once one is, repeated over every member while "
-      "structure is left) and a backward step after each addition (a "
+      "structure is left), a mimic swap after each addition that leaves the residual white (each earlier member "
+      "replaced by the {3} effect(s) whose single-effect correction is most like its own, kept when {0:g} deciban "
+      "better) and a backward step after each addition (a "
       "member is dropped when the explanation with it is less than {0:g} deciban better than the one without it: "
       "within the decision margin the explanation with fewer parameters is kept); members listed by their share of "
       "the squared gap, the main cause named when its share is at least {2:g} and it alone explains at least {2:g} of "
       "the squared gap",
-      kDecisiveDeciban, kMaxExplanationEffects, kMainCauseShare);
+      kDecisiveDeciban, kMaxExplanationEffects, kMainCauseShare, kMimicsPerMember);
 }
 
 std::string main_cause_text(const Verdict& v) {
