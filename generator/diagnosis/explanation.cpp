@@ -102,7 +102,8 @@ struct Search {
   /// One reference density per parameter of the joint model `members` (docs/method.md, "Reference
   /// priors in the combined search"): a member of the explanation `now` from its joint posterior there
   /// with uniform share `share_now` (kReferenceShareJoint where it keeps its role, kReferenceShareSingle in
-  /// a swap, where it may move far), any other from its single-effect posterior (kReferenceShareSingle).
+  /// a swap or a backward step, where it may move far), any other from its single-effect posterior
+  /// (kReferenceShareSingle).
   /// Empty (the prior) for a model of at most one parameter, evaluated by quadrature.
   std::vector<ReferenceDensity> reference(const std::vector<std::size_t>& members, const Explanation& now,
                                          double share_now) const {
@@ -137,11 +138,13 @@ struct Search {
   /// 20 dB? So they are screened like an addition round (evaluate_contenders with the reference 40 dB
   /// below the whole explanation: the margin lies 20 dB above it), and run in full only when their
   /// screened evidence lies within kScreenDeciban of the margin or of the best of them; one far below keeps
-  /// its screened estimate, which decides the member decisive all the same.
+  /// its screened estimate, which decides the member decisive all the same. The members left sample from
+  /// the whole explanation's posterior with a single effect's uniform share: they may take over the work of
+  /// the member taken out.
   std::vector<EffectResult> evaluate_reduced(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
                                              double log_z_whole) {
     if (models.empty()) return {};
-    const std::vector<EffectCandidate> tried = combined(models, now);
+    const std::vector<EffectCandidate> tried = combined(models, now, kReferenceShareSingle);
     const double reference = log_z_whole - 2.0 * kDecisiveDeciban * std::log(10.0) / 10.0;
     // No early stop: held to a leader this close, a screening run of 25 live points can stop before it
     // has found a peak that lies far from where the whole explanation put the remaining members.
