@@ -258,7 +258,7 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
   // The work of a candidate for the time left: a quadrature candidate counts 1, a sampled one 10 per parameter.
   std::vector<ComparisonJob> jobs;
   for (const auto& c : candidates)
-    jobs.push_back({c.label(), c.priors.size() <= 1 ? 1.0 : 10.0 * static_cast<double>(c.priors.size()),
+    jobs.push_back({c.label(), is_sampled(c, settings) ? 10.0 * static_cast<double>(c.priors.size()) : 1.0,
                     settings.sampler.dlogz});
   Comparison comparison(progress, settings.threads, "candidates");
   const std::vector<TaskTime> times = comparison.run(
