@@ -133,6 +133,7 @@ void fields(V& v, FitPassiveEstimate& e) {
   v("sampled_poles_relative_rms_residual", e.sampled_poles_relative_rms_residual);
   v("pole_search_steps", e.pole_search_steps);
   v("passivity_cost", e.passivity_cost);
+  v("passive_bound_relative_rms_residual", e.passive_bound_relative_rms_residual);
 }
 
 template <class V>

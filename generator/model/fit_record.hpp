@@ -86,6 +86,9 @@ struct FitPassiveEstimate {
   std::optional<std::int64_t> pole_search_steps;
   /// Why passivity costs more than 1.25× the best sample's residual; absent when it costs less.
   std::optional<std::string> passivity_cost;
+  /// With passivity_cost: the relative RMS residual of the best passive fit of any order (docs/passivity.md,
+  /// "The passive bound"); absent in older fits.
+  std::optional<double> passive_bound_relative_rms_residual;
 };
 
 struct FitGoodness {

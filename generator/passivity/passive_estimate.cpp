@@ -84,23 +84,48 @@ std::string violation(const Order& order, const Eigen::VectorXd& sample, const M
   return text;
 }
 
-std::string cost_reason(const Order& order, const Eigen::VectorXd& best_sample, const Measurement& data) {
+/// What the data allow a passive model (docs/passivity.md, "The passive bound"): with the bound, whether the
+/// estimate is near it (then the best sample's better fit needs Re G < 0, and the data say why) or a passive
+/// model of more terms fits better.
+std::string data_clause(const Measurement& data, double estimate_rms, const PassiveBound* bound) {
   const DataPassivity d = data_passivity(data);
   const std::string data_text =
       d.negative_points > 0
           ? fmt::format("the data themselves are not passive at {} of {} points (Re y down to {:.3g})",
                         d.negative_points, data.size(), d.min_re)
-          : fmt::format("the data are passive in band (min Re y = {:.3g}), so a better passive model may exist at "
-                        "another order or with poles far from the sampled ones",
-                        d.min_re);
+          : fmt::format("the data are passive in band (min Re y = {:.3g})", d.min_re);
+  if (bound == nullptr)
+    return d.negative_points > 0 ? data_text
+                                 : data_text + ", so a better passive model may exist at another order or with "
+                                               "poles far from the sampled ones";
+  const double b = bound->relative_rms_residual;
+  if (estimate_rms > PassiveEstimate::kCostRatio * b)
+    return fmt::format("{}; a passive admittance of {} terms fits them at {:.3g} % (the passive bound), so a larger "
+                       "order may fit better and stay passive",
+                       data_text, bound->terms, 100.0 * b);
+  const std::string why =
+      d.negative_points > 0
+          ? std::string("no passive wall can follow them")
+          : std::string("so their real and imaginary parts are far from those of a causal passive wall "
+                        "(Kramers-Kronig): check the tube's calibration, reference plane and sample mounting");
+  return fmt::format("{}, but the best passive admittance of any order found fits them at {:.3g} % (the passive "
+                     "bound: {} passive terms by non-negative least squares), {}; this estimate is within {:.2f}x of "
+                     "that bound",
+                     data_text, 100.0 * b, bound->terms, why, estimate_rms / b);
+}
+
+std::string cost_reason(const Order& order, const Eigen::VectorXd& best_sample, const Measurement& data,
+                        double estimate_rms, const PassiveBound* bound) {
   return fmt::format("{}; no passive {} with poles near the best samples' fits better (pole search from {} starts); {}",
-                     violation(order, best_sample, data), order.name(), PassiveEstimate::kStarts, data_text);
+                     violation(order, best_sample, data), order.name(), PassiveEstimate::kStarts,
+                     data_clause(data, estimate_rms, bound));
 }
 
 }  // namespace
 
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
-                                 const std::vector<Eigen::VectorXd>& candidates, DataCount count, int starts) {
+                                 const std::vector<Eigen::VectorXd>& candidates, DataCount count, int starts,
+                                 const LazyPassiveBound* bound) {
   ADMITGEN_ENSURE(!candidates.empty(), "passive estimate of {}: no samples", order.name());
   const Likelihood likelihood(data, order, count);
   const double data_norm2 = data.y.abs2().sum();
@@ -128,8 +153,11 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
   best.best_sample_log_likelihood = likelihood(candidates.front().data());
   best.best_sample_relative_rms_residual = rel_rms(candidates.front());
   best.relative_rms_residual = rel_rms(best.theta);
-  if (best.relative_rms_residual > PassiveEstimate::kCostRatio * best.best_sample_relative_rms_residual)
-    best.cost_reason = cost_reason(order, candidates.front(), data);
+  if (best.relative_rms_residual > PassiveEstimate::kCostRatio * best.best_sample_relative_rms_residual) {
+    const PassiveBound* b = bound != nullptr ? &bound->get() : nullptr;
+    if (b != nullptr) best.passive_bound_relative_rms_residual = b->relative_rms_residual;
+    best.cost_reason = cost_reason(order, candidates.front(), data, best.relative_rms_residual, b);
+  }
   return best;
 }
 

@@ -14,9 +14,11 @@
 #include "data/measurement.hpp"
 #include "inference/likelihood.hpp"
 #include "model/order.hpp"
+#include "passivity/passive_bound.hpp"
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,16 +56,19 @@ struct PassiveEstimate {
   /// Relative RMS residual of the best candidate with sampled poles (before the pole search).
   double sampled_poles_relative_rms_residual = 0.0;
   /// Why passivity costs more than kCostRatio in residual (empty otherwise): where the best sample is not
-  /// passive, and whether the data are.
+  /// passive, whether the data are, and what the passive bound allows.
   std::string cost_reason;
+  /// The passive bound of the data (passivity/passive_bound.hpp), when cost_reason was stated with it.
+  std::optional<double> passive_bound_relative_rms_residual;
 };
 
 /// `candidates`: samples of the order in descending likelihood (θ packed as model/order.hpp); the first
 /// kCandidates are tried. changed = false when the chosen one was passive as sampled. `starts` of the pole
-/// search (0: the sampled poles only, as before the search existed; for measuring what it gains).
+/// search (0: the sampled poles only, as before the search existed; for measuring what it gains). `bound`, when
+/// given, is the data's passive bound, asked for only when passivity costs more than kCostRatio.
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
                                  const std::vector<Eigen::VectorXd>& candidates, DataCount count,
-                                 int starts = PassiveEstimate::kStarts);
+                                 int starts = PassiveEstimate::kStarts, const LazyPassiveBound* bound = nullptr);
 
 /// Share of data points with Re y < 0 (a passive wall has Re y ≥ 0) and the most negative Re y.
 struct DataPassivity {

@@ -454,10 +454,11 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   std::iota(orders.begin(), orders.end(), std::size_t{0});
   std::stable_sort(orders.begin(), orders.end(),
                    [&](auto a, auto b) { return fit.models[a].order.dim() > fit.models[b].order.dim(); });
+  const passivity::LazyPassiveBound bound(data);
   run_in_parallel(orders, settings.threads, [&](std::size_t i) {
     auto& m = fit.models[i];
     m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
-                                            settings.data_count);
+                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound);
   });
   if (const auto w = passivity::passivity_cost_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
       !w.empty())

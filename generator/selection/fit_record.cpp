@@ -92,6 +92,7 @@ FitPassiveEstimate passive_record(const ModelResult& m) {
     r.pole_search_steps = e.search_steps;
   }
   if (!e.cost_reason.empty()) r.passivity_cost = e.cost_reason;
+  r.passive_bound_relative_rms_residual = e.passive_bound_relative_rms_residual;
   return r;
 }
 
