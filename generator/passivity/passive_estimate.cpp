@@ -87,7 +87,7 @@ std::string violation(const Order& order, const Eigen::VectorXd& sample, const M
 /// What the data allow a passive model (docs/passivity.md, "The passive bound"): with the bound, whether the
 /// estimate is near it (then the best sample's better fit needs Re G < 0, and the data say why) or a passive
 /// model of more terms fits better.
-std::string data_clause(const Measurement& data, double estimate_rms, const PassiveBound* bound) {
+std::string data_clause(const Measurement& data, double estimate_rms, const numerics::PassiveBound* bound) {
   const DataPassivity d = data_passivity(data);
   const std::string data_text =
       d.negative_points > 0
@@ -115,13 +115,19 @@ std::string data_clause(const Measurement& data, double estimate_rms, const Pass
 }
 
 std::string cost_reason(const Order& order, const Eigen::VectorXd& best_sample, const Measurement& data,
-                        double estimate_rms, const PassiveBound* bound) {
+                        double estimate_rms, const numerics::PassiveBound* bound) {
   return fmt::format("{}; no passive {} with poles near the best samples' fits better (pole search from {} starts); {}",
                      violation(order, best_sample, data), order.name(), PassiveEstimate::kStarts,
                      data_clause(data, estimate_rms, bound));
 }
 
 }  // namespace
+
+const numerics::PassiveBound& LazyPassiveBound::get() const {
+  std::call_once(computed_,
+                 [this] { bound_ = numerics::passive_bound(data_.omega(), data_.y, Eigen::ArrayXd::Ones(data_.size())); });
+  return *bound_;
+}
 
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
                                  const std::vector<Eigen::VectorXd>& candidates, DataCount count, int starts,
@@ -154,7 +160,7 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
   best.best_sample_relative_rms_residual = rel_rms(candidates.front());
   best.relative_rms_residual = rel_rms(best.theta);
   if (best.relative_rms_residual > PassiveEstimate::kCostRatio * best.best_sample_relative_rms_residual) {
-    const PassiveBound* b = bound != nullptr ? &bound->get() : nullptr;
+    const numerics::PassiveBound* b = bound != nullptr ? &bound->get() : nullptr;
     if (b != nullptr) best.passive_bound_relative_rms_residual = b->relative_rms_residual;
     best.cost_reason = cost_reason(order, candidates.front(), data, best.relative_rms_residual, b);
   }

@@ -14,15 +14,30 @@
 #include "data/measurement.hpp"
 #include "inference/likelihood.hpp"
 #include "model/order.hpp"
-#include "passivity/passive_bound.hpp"
+#include "numerics/passive_bound.hpp"
 
 #include <Eigen/Core>
 
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace admitgen::passivity {
+
+/// The passive bound (numerics/passive_bound.hpp; docs/passivity.md, "The passive bound") of a measurement with
+/// the likelihood's unit weights, computed once, when first asked for (the orders of a fit ask from several
+/// threads; the value does not depend on which one computes it). Most fits never ask: only an estimate that costs more than 1.25x the best sample's residual is explained with it.
+class LazyPassiveBound {
+ public:
+  explicit LazyPassiveBound(const Measurement& data) : data_(data) {}
+  const numerics::PassiveBound& get() const;
+
+ private:
+  const Measurement& data_;
+  mutable std::once_flag computed_;
+  mutable std::optional<numerics::PassiveBound> bound_;
+};
 
 struct PassiveEstimate {
   /// Candidates tried: poles of the best samples differ little, but where the best sample's residues
@@ -58,7 +73,7 @@ struct PassiveEstimate {
   /// Why passivity costs more than kCostRatio in residual (empty otherwise): where the best sample is not
   /// passive, whether the data are, and what the passive bound allows.
   std::string cost_reason;
-  /// The passive bound of the data (passivity/passive_bound.hpp), when cost_reason was stated with it.
+  /// The passive bound of the data (numerics/passive_bound.hpp), when cost_reason was stated with it.
   std::optional<double> passive_bound_relative_rms_residual;
 };
 

@@ -140,6 +140,16 @@ inline std::vector<Export> export_catalogue(const Reference& r) {
   c.push_back({"e^{-iwt} impedance without --time-convention", "z_minus_silent.csv",
                "f,Re(Z/Z0),Im(Z/Z0)\n" + table(r, ",", [&](auto i) { return parts(std::conj(z(i))); }), {}, "",
                "The file probably uses the other time convention: give --time-convention -jwt"});
+  // A series R-L wall, y = 1/(0.8 + jω·1 ms): passive and causal as read, yet Im y < 0 at the lowest frequencies
+  // like the other convention's porous layer; the passive bounds of the two readings (a few 1e-3 % as read, where
+  // the hats interpolate Re y exactly enough, against tens of % conjugated) say the convention is right.
+  c.push_back({"mass-like passive wall (Im y < 0 at low frequency) without --time-convention", "mass_like.csv",
+               "f,Re(y),Im(y)\n" + table(r, ",", [&](auto i) {
+                 return parts(1.0 / std::complex<double>(0.8, 2.0 * M_PI * r.f[i] * 1e-3));
+               }),
+               {}, "",
+               "so the convention is probably right and the surface mass-like at low frequency or its phase off (a "
+               "calibration or reference-plane error): give --time-convention +jwt to fit them as read"});
   c.push_back({"absorption only, with header", "alpha.csv",
                "Frequency [Hz];Absorption coefficient\n" + table(r, ";", alpha, "\n", true), {}, "",
                "fixes the magnitude of the reflection factor R at each frequency but not its phase"});

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "passivity/passive_bound.hpp"
+#include "numerics/passive_bound.hpp"
 
 #include "core/errors.hpp"
 #include "numerics/least_squares_inequality.hpp"
@@ -9,7 +9,7 @@
 #include <complex>
 #include <vector>
 
-namespace admitgen::passivity {
+namespace admitgen::numerics {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -45,15 +45,14 @@ std::vector<double> log_grid(double lo, double hi, int per_decade) {
 
 }  // namespace
 
-PassiveBound passive_bound(const ResidueTarget& target) {
-  const Eigen::Index m = target.omega.size();
-  ADMITGEN_ENSURE(m > 0 && target.values.size() == m && target.weights.size() == m, "passive bound: {} frequencies",
-                  m);
-  ADMITGEN_ENSURE(target.omega.minCoeff() > 0.0, "passive bound: frequencies must be positive");
-  const double w_lo = target.omega.minCoeff(), w_hi = target.omega.maxCoeff();
+PassiveBound passive_bound(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& values, const Eigen::ArrayXd& weights) {
+  const Eigen::Index m = omega.size();
+  ADMITGEN_ENSURE(m > 0 && values.size() == m && weights.size() == m, "passive bound: {} frequencies", m);
+  ADMITGEN_ENSURE(omega.minCoeff() > 0.0, "passive bound: frequencies must be positive");
+  const double w_lo = omega.minCoeff(), w_hi = omega.maxCoeff();
   std::vector<std::complex<double>> columns;  // column-major, m values per term
   const auto add = [&](auto term) {
-    for (Eigen::Index i = 0; i < m; ++i) columns.push_back(term(target.omega[i]));
+    for (Eigen::Index i = 0; i < m; ++i) columns.push_back(term(omega[i]));
   };
   add([](double) { return std::complex<double>(1.0, 0.0); });
   for (const double l : log_grid(w_lo / 1000.0, 1000.0 * w_hi, PassiveBound::kFarPerDecade)) {
@@ -68,12 +67,12 @@ PassiveBound passive_bound(const ResidueTarget& target) {
   Eigen::MatrixXd a(2 * m, n);
   Eigen::VectorXd b(2 * m);
   for (Eigen::Index i = 0; i < m; ++i) {
-    b[i] = target.weights[i] * target.values[i].real();
-    b[m + i] = target.weights[i] * target.values[i].imag();
+    b[i] = weights[i] * values[i].real();
+    b[m + i] = weights[i] * values[i].imag();
     for (Eigen::Index j = 0; j < n; ++j) {
       const std::complex<double> g = columns[static_cast<std::size_t>(j * m + i)];
-      a(i, j) = target.weights[i] * g.real();
-      a(m + i, j) = target.weights[i] * g.imag();
+      a(i, j) = weights[i] * g.real();
+      a(m + i, j) = weights[i] * g.imag();
     }
   }
   const Eigen::VectorXd x = numerics::non_negative_least_squares(a, b);
@@ -84,11 +83,4 @@ PassiveBound passive_bound(const ResidueTarget& target) {
   return out;
 }
 
-const PassiveBound& LazyPassiveBound::get() const {
-  std::call_once(computed_, [this] {
-    bound_ = passive_bound({data_.omega(), data_.y, Eigen::ArrayXd::Ones(data_.size())});
-  });
-  return *bound_;
-}
-
-}  // namespace admitgen::passivity
+}  // namespace admitgen::numerics

@@ -10,7 +10,7 @@
 /// (Kramers–Kronig; Bode, *Network Analysis and Feedback Amplifier Design*, 1945, ch. 14). So the passive
 /// admittances form a convex cone: every non-negative combination of passive terms is passive. Here the cone is
 /// spanned by a dictionary of passive terms, and the best passive fit in it is a non-negative least-squares
-/// problem (numerics/least_squares_inequality.hpp):
+/// problem (least_squares_inequality.hpp):
 ///   - a constant (u = 1);
 ///   - hats: u piecewise linear in ω, 1 at one node of a log grid of kHatsPerDecade nodes per decade over
 ///     [ω_min / 10, 10 ω_max], 0 at the two neighbouring nodes; Im G in closed form (below). Any continuous u ≥ 0
@@ -23,13 +23,9 @@
 /// passive filter can follow them.
 #pragma once
 
-#include "data/measurement.hpp"
-#include "passivity/passive_residues.hpp"
+#include <Eigen/Core>
 
-#include <mutex>
-#include <optional>
-
-namespace admitgen::passivity {
+namespace admitgen::numerics {
 
 struct PassiveBound {
   static constexpr int kHatsPerDecade = 128;
@@ -40,21 +36,9 @@ struct PassiveBound {
   int dictionary = 0;  ///< terms offered
 };
 
-/// The best passive fit to `target` over the dictionary above (target.omega > 0).
-PassiveBound passive_bound(const ResidueTarget& target);
+/// The best passive fit to the complex `values` at angular frequencies `omega` (> 0, rad/s) with weights `weights`
+/// over the dictionary above.
+PassiveBound passive_bound(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& values, const Eigen::ArrayXd& weights);
 
-/// The passive bound of a measurement with the likelihood's unit weights, computed once, when first asked for (the
-/// orders of a fit ask from several threads; the value does not depend on which one computes it). Most fits never
-/// ask: only an estimate that costs more than 1.25x the best sample's residual is explained with it.
-class LazyPassiveBound {
- public:
-  explicit LazyPassiveBound(const Measurement& data) : data_(data) {}
-  const PassiveBound& get() const;
 
- private:
-  const Measurement& data_;
-  mutable std::once_flag computed_;
-  mutable std::optional<PassiveBound> bound_;
-};
-
-}  // namespace admitgen::passivity
+}  // namespace admitgen::numerics
