@@ -25,6 +25,8 @@ constexpr double kImagTolerance = 1e-5;
 constexpr double kSingularFraction = 1e-6;
 /// Re G below −kSignTolerance · scale counts as negative (Re G is evaluated to ~1e-15 of the scale).
 constexpr double kSignTolerance = 1e-12;
+/// Points per decade of the decision's net of direct evaluations (see decide()).
+constexpr int kNetPerDecade = 32;
 
 /// G(0) = D − C A⁻¹ B.
 double dc_gain(const StateSpace& ss) {
@@ -102,13 +104,18 @@ std::vector<double> candidates(const StateSpace& ss, double scale, std::string& 
   return hamiltonian_crossings(shifted);
 }
 
-/// The exact decision: crossings → sign per interval → polished negative bands. `w_ref` is a typical
-/// frequency, used only when there is no crossing at all (then one evaluation anywhere decides).
-PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double w_ref) {
+/// The exact decision: crossings → sign per interval → polished negative bands, over [lo, hi] and beyond.
+/// A net of kNetPerDecade log-spaced points per decade over [lo, hi] joins the sample points: where residues
+/// cancel by many orders of magnitude (|A| ~ 1e9 for |G| ~ 1e3, a posterior sample along a nearly degenerate
+/// residue direction), rounding moves the Hamiltonian's imaginary-axis eigenvalues off the axis and the
+/// crossings are lost; every negative band at least a net spacing wide is still found, by direct evaluation of
+/// Re G. (Such a sample, certified before the net, had Re G = −1225 at 5359 Hz: tests/checks/test_passivity.cpp.)
+PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi) {
   PassivityResult r;
+  const double w_ref = std::sqrt(lo * hi);
   const double tol = kSignTolerance * scale;
   const std::vector<double> cand = candidates(ss, scale, r.method);
-  // Sample points: 0, every candidate, the midpoint of each gap, one point beyond the last, and ∞ (= D).
+  // Sample points: 0, every candidate, the midpoint of each gap, one point beyond the last, the net, and ∞ (= D).
   std::vector<double> w{0.0};
   double prev = 0.0;
   for (double c : cand) {
@@ -118,6 +125,10 @@ PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale,
     prev = c;
   }
   w.push_back(prev > 0.0 ? 2.0 * prev : w_ref);
+  const int net = std::max(1, static_cast<int>(std::ceil(kNetPerDecade * std::log10(hi / lo))));
+  for (int k = 0; k <= net; ++k) w.push_back(lo * std::pow(hi / lo, static_cast<double>(k) / net));
+  std::sort(w.begin(), w.end());
+  w.erase(std::unique(w.begin(), w.end()), w.end());
   std::vector<double> v;
   for (double x : w) v.push_back(re(x));
   w.push_back(kInf);
@@ -251,7 +262,7 @@ std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
 PassivityResult hamiltonian_passivity(const StateSpace& ss, const RealPartFn& re, double scan_lo, double scan_hi,
                                       bool scan) {
   const double scale = model_scale(ss, re, scan_lo, scan_hi);
-  PassivityResult r = decide(ss, re, scale, std::sqrt(scan_lo * scan_hi));
+  PassivityResult r = decide(ss, re, scale, scan_lo, scan_hi);
   if (scan) {
     scan_minimum(r, re, scan_lo, scan_hi, ss.D);
   } else {
@@ -274,7 +285,7 @@ PassivityResult continuous_passivity(const Order& order, const double* theta) {
   } else {
     const auto [lo, hi] = pole_range(order, theta);
     ADMITGEN_ENSURE(lo > 0.0, "continuous passivity needs a causal model (every lambda, alpha > 0)");
-    r = decide(ss, re, multipole_bound(order, theta), std::sqrt(lo * hi));
+    r = decide(ss, re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi);
     scan_minimum(r, re, 1e-3 * lo, 1e3 * hi, ss.D);
   }
   r.passive = r.bands.empty();
@@ -304,7 +315,7 @@ bool is_passive(const Order& order, const double* theta) {
   if (g0 < 0.0) return false;
   const RealPartFn re = [&](double w) { return re_multipole(order, theta, w); };
   const auto [lo, hi] = pole_range(order, theta);
-  return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), std::sqrt(lo * hi)).passive;
+  return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi).passive;
 }
 
 std::vector<double> resonance_points(double centre, double half) {

@@ -134,6 +134,29 @@ TEST_CASE("Hamiltonian test finds a 0.7 Hz wide non-passive band a 1000-point sc
   CHECK_FALSE(is_passive(order, th.data()));
 }
 
+TEST_CASE("a model whose residues cancel by six orders of magnitude is found non-passive where Re G < 0") {
+  // A posterior sample of a Q4S4 fit of a real grey-foam tube file (400-2000 Hz), along a nearly degenerate residue
+  // direction: residues up to 2.5e8 for |G| ~ 1e3. Rounding moved the Hamiltonian's imaginary-axis eigenvalues off
+  // the axis, no crossing was found, and the model was certified passive. The reference is Re G evaluated directly
+  // (re_g, a sum of eight terms of at most ~1e4 each: rounding ~1e-12) at 5358.88 Hz: -1225, and at 200 Hz: -0.40.
+  const Order order(4, 4);
+  Eigen::VectorXd th(order.dim());
+  th << 1880.782732818646, 2459836.9263175502, 1216.5547138562667, -2512054.657162241, 1228.0792164311167,
+      60183.230565830425, 1919.3017668699351, -246576337.11877432, 37132.30598622294, -3287.7448445249233,
+      43360.31722129556, 449.5524976492636, 14666.330924794245, 349663.84493879037, 2710206.724945405,
+      5128.077140018174, 17563.596569514135, 13773174.477885474, 124228338.12659416, 29710.548133197943,
+      18590.294429890193, 4477857.533545113, -135.52183607538313, 1498.2227224155968, 20851.366774695314;
+  REQUIRE(re_g(order, th, 5358.88) < -1000.0);
+  REQUIRE(re_g(order, th, 200.0) < -0.3);
+  const PassivityResult p = continuous_passivity(order, th.data());
+  CHECK_FALSE(p.passive);
+  CHECK(p.min_re < -1000.0);
+  bool at_200_hz = false;  // the narrow low band is found too, not only the deep one
+  for (const auto& b : p.bands) at_200_hz = at_200_hz || (b.lo < 200.0 && b.hi > 200.0);
+  CHECK(at_200_hz);
+  CHECK_FALSE(is_passive(order, th.data()));
+}
+
 TEST_CASE("passivity edge cases: G_inf = 0 (reciprocal realisation), G_inf < 0, term-wise conditions") {
   // One real pole, G_inf = 0: Re G = A lambda/(lambda^2 + w^2) > 0, tends to 0 at infinity: passive.
   const Order q1(1, 0);
