@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "inference/pole_space.hpp"
 #include "model/residue_basis.hpp"
+#include "passivity/passive_estimate.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -33,16 +34,31 @@ std::vector<std::string> residues_in_prior_tail(const ModelResult& model, const 
   return out;
 }
 
+/// The warning for residues in the prior's tail. Where the data's passive bound (docs/passivity.md, "The passive
+/// bound") lies far above the best sample's fit, what the tail values buy is Re G < 0: a larger scale would only
+/// admit more of it, so the advice is to check the measurement.
+std::string tail_warning(const ModelResult& model, const PriorRanges& priors, const std::vector<std::string>& tail) {
+  const std::string head = fmt::format(
+      "{}: residues far in the tail of their Gaussian prior: {}; the admittance scale {} holds them back and sets the "
+      "evidence of {}",
+      model.order.name(), fmt::join(tail, ", "), priors.admittance_scale, model.order.name());
+  const auto& e = model.passive;
+  if (e.passive_bound_relative_rms_residual &&
+      e.relative_rms_residual <= passivity::PassiveEstimate::kCostRatio * *e.passive_bound_relative_rms_residual)
+    return fmt::format("{}; they are not physical: no passive admittance found fits these data better than {:.3g} % "
+                       "(the passive bound) where the best sample reaches {:.3g} %, so the tail values buy a fit with "
+                       "Re G < 0; check the measurement rather than raise {}",
+                       head, 100.0 * *e.passive_bound_relative_rms_residual,
+                       100.0 * e.best_sample_relative_rms_residual, setting("admittance_scale"));
+  return fmt::format("{}; if such values are physical, raise it with {}", head, setting("admittance_scale"));
+}
+
 }  // namespace
 
 std::optional<std::string> prior_edge_warning(const ModelResult& model, const PriorRanges& priors) {
   if (priors.residues == ResiduePrior::gaussian) {
     const std::vector<std::string> tail = residues_in_prior_tail(model, priors);
-    if (!tail.empty())
-      return fmt::format("{}: residues far in the tail of their Gaussian prior: {}; the admittance scale {} holds them "
-                         "back and sets the evidence of {}; if such values are physical, raise it with {}",
-                         model.order.name(), fmt::join(tail, ", "), priors.admittance_scale, model.order.name(),
-                         setting("admittance_scale"));
+    if (!tail.empty()) return tail_warning(model, priors, tail);
   }
   std::vector<std::string> against;
   const std::vector<Family> families = model.order.families();

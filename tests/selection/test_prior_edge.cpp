@@ -69,3 +69,36 @@ TEST_CASE("prior edge: a concentrated posterior within 1 % of a cut bound is rep
     CHECK(prior_edge_warning(m, band));
   }
 }
+
+TEST_CASE("prior edge: residues in the Gaussian prior's tail; the advice follows the data's passive bound") {
+  PriorRanges pr = PriorRanges::table1();
+  pr.residues = ResiduePrior::gaussian;
+  pr.admittance_scale = 1.0;  // G∞'s prior standard deviation is the scale itself
+  ModelResult m = model();
+  place(m.parameters[0], -0.5, 0.5, 0.2);  // G∞ = 0: within 4 prior standard deviations
+  CHECK_FALSE(prior_edge_warning(m, pr));
+  place(m.parameters[0], -9.7, -9.3, 0.1);  // G∞ = -9.5: 9.5 standard deviations out, as rect_10cm's Q4S4
+  const auto plain = prior_edge_warning(m, pr);
+  REQUIRE(plain);
+  CHECK(plain->find("G_inf = -9.5 (9.5 prior standard deviations)") != std::string::npos);
+  CHECK(plain->find("if such values are physical, raise it") != std::string::npos);
+
+  SUBCASE("the passive estimate sits at the passive bound: the tail buys Re G < 0, not physics") {
+    m.passive.best_sample_relative_rms_residual = 0.0475;
+    m.passive.relative_rms_residual = 0.221;
+    m.passive.passive_bound_relative_rms_residual = 0.210;  // 1.05x: within 1.25x of the bound
+    const auto w = prior_edge_warning(m, pr);
+    REQUIRE(w);
+    CHECK(w->find("they are not physical") != std::string::npos);
+    CHECK(w->find("21 % (the passive bound) where the best sample reaches 4.75 %") != std::string::npos);
+    CHECK(w->find("raise it") == std::string::npos);
+  }
+  SUBCASE("a larger order would fit better passively (estimate above 1.25x the bound): the plain advice stays") {
+    m.passive.best_sample_relative_rms_residual = 0.0475;
+    m.passive.relative_rms_residual = 0.30;
+    m.passive.passive_bound_relative_rms_residual = 0.21;  // 1.43x
+    const auto w = prior_edge_warning(m, pr);
+    REQUIRE(w);
+    CHECK(w->find("if such values are physical, raise it") != std::string::npos);
+  }
+}
