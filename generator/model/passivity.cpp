@@ -25,8 +25,12 @@ constexpr double kImagTolerance = 1e-5;
 constexpr double kSingularFraction = 1e-6;
 /// Re G below −kSignTolerance · scale counts as negative (Re G is evaluated to ~1e-15 of the scale).
 constexpr double kSignTolerance = 1e-12;
-/// Points per decade of the decision's net of direct evaluations (see decide()).
+/// Points per decade of the decision's net of direct evaluations (see decide()): 32 for the certificates
+/// (continuous_passivity, hamiltonian_passivity), 4 over [λ_min/10, 10 λ_max] for the fitter's is_passive, which
+/// runs at every likelihood call of `fit --passive` (32 made that fit 4.6x slower) and whose samples are
+/// certified again before anything is shipped.
 constexpr int kNetPerDecade = 32;
+constexpr int kFitterNetPerDecade = 4;
 
 /// G(0) = D − C A⁻¹ B.
 double dc_gain(const StateSpace& ss) {
@@ -110,7 +114,8 @@ std::vector<double> candidates(const StateSpace& ss, double scale, std::string& 
 /// residue direction), rounding moves the Hamiltonian's imaginary-axis eigenvalues off the axis and the
 /// crossings are lost; every negative band at least a net spacing wide is still found, by direct evaluation of
 /// Re G. (Such a sample, certified before the net, had Re G = −1225 at 5359 Hz: tests/checks/test_passivity.cpp.)
-PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi) {
+PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi,
+                       int net_per_decade = kNetPerDecade) {
   PassivityResult r;
   const double w_ref = std::sqrt(lo * hi);
   const double tol = kSignTolerance * scale;
@@ -125,7 +130,7 @@ PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale,
     prev = c;
   }
   w.push_back(prev > 0.0 ? 2.0 * prev : w_ref);
-  const int net = std::max(1, static_cast<int>(std::ceil(kNetPerDecade * std::log10(hi / lo))));
+  const int net = std::max(1, static_cast<int>(std::ceil(net_per_decade * std::log10(hi / lo))));
   for (int k = 0; k <= net; ++k) w.push_back(lo * std::pow(hi / lo, static_cast<double>(k) / net));
   std::sort(w.begin(), w.end());
   w.erase(std::unique(w.begin(), w.end()), w.end());
@@ -315,7 +320,9 @@ bool is_passive(const Order& order, const double* theta) {
   if (g0 < 0.0) return false;
   const RealPartFn re = [&](double w) { return re_multipole(order, theta, w); };
   const auto [lo, hi] = pole_range(order, theta);
-  return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi).passive;
+  return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), 0.1 * lo, 10.0 * hi,
+                kFitterNetPerDecade)
+      .passive;
 }
 
 std::vector<double> resonance_points(double centre, double half) {

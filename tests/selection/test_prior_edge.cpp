@@ -70,7 +70,7 @@ TEST_CASE("prior edge: a concentrated posterior within 1 % of a cut bound is rep
   }
 }
 
-TEST_CASE("prior edge: residues in the Gaussian prior's tail; the advice follows the data's passive bound") {
+TEST_CASE("prior edge: residues in the Gaussian prior's tail, with advice that follows the data's passive bound") {
   PriorRanges pr = PriorRanges::table1();
   pr.residues = ResiduePrior::gaussian;
   pr.admittance_scale = 1.0;  // G∞'s prior standard deviation is the scale itself
