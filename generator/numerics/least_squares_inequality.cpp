@@ -3,7 +3,6 @@
 
 #include "core/errors.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/QR>
 
 #include <algorithm>
@@ -27,11 +26,14 @@ Eigen::VectorXd solve_on(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, con
   return z;
 }
 
-/// The active-set loop of Lawson & Hanson (Algorithm 23.10) for min ‖A x − b‖, x ≥ 0, on n unknowns, given
-/// the negative gradient w(x) = Aᵀ(b − A x) and the unconstrained least-squares solution on a set of columns
-/// (others 0); `tol` bounds the rounding in w.
-template <class Gradient, class Solve>
-Eigen::VectorXd lawson_hanson(Eigen::Index n, double tol, const Gradient& gradient, const Solve& solve) {
+}  // namespace
+
+Eigen::VectorXd non_negative_least_squares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
+  const Eigen::Index n = a.cols();
+  ADMITGEN_ENSURE(a.rows() == b.size(), "NNLS: {} rows but {} right-hand sides", a.rows(), b.size());
+  // Tolerance on the dual (gradient) test: rounding in Aᵀ(b − Ax) is ~ ε ‖A‖ ‖b‖ per entry.
+  const double tol = 10.0 * std::numeric_limits<double>::epsilon() * std::max<double>(a.rows(), n) *
+                     a.cwiseAbs().maxCoeff() * std::max(b.cwiseAbs().maxCoeff(), 1e-300);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
   std::vector<bool> passive(static_cast<std::size_t>(n), false);  // the set P of Lawson–Hanson
   // Each outer step adds one index; each inner step removes at least one: 3n outer steps bound the work
@@ -41,21 +43,21 @@ Eigen::VectorXd lawson_hanson(Eigen::Index n, double tol, const Gradient& gradie
   // skipped until x next changes (the safeguard of Lawson & Hanson §23.3, step 6, and of later codes).
   std::vector<bool> skipped(static_cast<std::size_t>(n), false);
   for (int outer = 0; outer < 3 * static_cast<int>(n) + 10; ++outer) {
-    const Eigen::VectorXd w = gradient(x);
+    const Eigen::VectorXd w = a.transpose() * (b - a * x);
     Eigen::Index t = -1;
     double best = tol;
     for (Eigen::Index j = 0; j < n; ++j)
       if (!passive[static_cast<std::size_t>(j)] && !skipped[static_cast<std::size_t>(j)] && w[j] > best) best = w[j], t = j;
     if (t < 0) break;  // Kuhn–Tucker conditions hold (up to the skipped, rounding-level indices)
     passive[static_cast<std::size_t>(t)] = true;
-    if (solve(passive)[t] <= 0.0) {
+    if (solve_on(a, b, passive)[t] <= 0.0) {
       passive[static_cast<std::size_t>(t)] = false;
       skipped[static_cast<std::size_t>(t)] = true;
       continue;
     }
     std::fill(skipped.begin(), skipped.end(), false);
     for (int inner = 0; inner < static_cast<int>(n) + 1; ++inner) {
-      const Eigen::VectorXd z = solve(passive);
+      const Eigen::VectorXd z = solve_on(a, b, passive);
       double alpha = 1.0;
       Eigen::Index limiting = -1;  // the index that stops the step: it leaves P, so every inner step shrinks P
       for (Eigen::Index j = 0; j < n; ++j)
@@ -76,46 +78,6 @@ Eigen::VectorXd lawson_hanson(Eigen::Index n, double tol, const Gradient& gradie
     }
   }
   return x;
-}
-
-}  // namespace
-
-Eigen::VectorXd non_negative_least_squares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b) {
-  const Eigen::Index n = a.cols();
-  ADMITGEN_ENSURE(a.rows() == b.size(), "NNLS: {} rows but {} right-hand sides", a.rows(), b.size());
-  // Tolerance on the dual (gradient) test: rounding in Aᵀ(b − Ax) is ~ ε ‖A‖ ‖b‖ per entry.
-  const double tol = 10.0 * std::numeric_limits<double>::epsilon() * std::max<double>(a.rows(), n) *
-                     a.cwiseAbs().maxCoeff() * std::max(b.cwiseAbs().maxCoeff(), 1e-300);
-  return lawson_hanson(
-      n, tol, [&](const Eigen::VectorXd& x) -> Eigen::VectorXd { return a.transpose() * (b - a * x); },
-      [&](const std::vector<bool>& set) { return solve_on(a, b, set); });
-}
-
-Eigen::VectorXd non_negative_least_squares_normal(const Eigen::MatrixXd& gram, const Eigen::VectorXd& atb) {
-  const Eigen::Index n = gram.cols();
-  ADMITGEN_ENSURE(gram.rows() == n && atb.size() == n, "NNLS (normal equations): {}x{} Gram, {} right-hand sides",
-                  gram.rows(), n, atb.size());
-  // Rounding in Aᵀb − AᵀA x is ~ ε n max|Aᵀb| per entry near the optimum, where AᵀA x ≈ Aᵀb on the active set.
-  const double tol = 10.0 * std::numeric_limits<double>::epsilon() * static_cast<double>(n) *
-                     std::max(atb.cwiseAbs().maxCoeff(), 1e-300);
-  const auto solve = [&](const std::vector<bool>& set) {
-    std::vector<Eigen::Index> cols;
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (set[static_cast<std::size_t>(j)]) cols.push_back(j);
-    const auto k = static_cast<Eigen::Index>(cols.size());
-    Eigen::MatrixXd sub(k, k);
-    Eigen::VectorXd rhs(k);
-    for (Eigen::Index r = 0; r < k; ++r) {
-      rhs[r] = atb[cols[static_cast<std::size_t>(r)]];
-      for (Eigen::Index c = 0; c < k; ++c) sub(r, c) = gram(cols[static_cast<std::size_t>(r)], cols[static_cast<std::size_t>(c)]);
-    }
-    const Eigen::VectorXd zs = sub.ldlt().solve(rhs);
-    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-    for (Eigen::Index r = 0; r < k; ++r) z[cols[static_cast<std::size_t>(r)]] = zs[r];
-    return z;
-  };
-  return lawson_hanson(
-      n, tol, [&](const Eigen::VectorXd& x) -> Eigen::VectorXd { return atb - gram * x; }, solve);
 }
 
 LsiSolution least_squares_inequality(const Eigen::MatrixXd& e, const Eigen::VectorXd& f, const Eigen::MatrixXd& g,

@@ -22,12 +22,6 @@ namespace admitgen::numerics {
 /// min ‖A x − b‖ subject to x ≥ 0 (Lawson–Hanson active set). Returns x.
 Eigen::VectorXd non_negative_least_squares(const Eigen::MatrixXd& a, const Eigen::VectorXd& b);
 
-/// The same problem given by its normal equations, Gram = AᵀA and Aᵀb: each active-set solve is an LDLᵀ of the
-/// active block instead of a QR of the active columns, so its cost no longer grows with the rows. For tall systems
-/// with many columns (numerics/passive_bound.hpp: hundreds of terms on two thousand rows) where the active columns
-/// stay well conditioned; it squares their condition number.
-Eigen::VectorXd non_negative_least_squares_normal(const Eigen::MatrixXd& gram, const Eigen::VectorXd& atb);
-
 struct LsiSolution {
   bool feasible = false;  ///< false: no x satisfies G x ≥ h (x is then undefined)
   Eigen::VectorXd x;

@@ -75,9 +75,7 @@ PassiveBound passive_bound(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& v
       a(m + i, j) = weights[i] * g.imag();
     }
   }
-  // The normal equations: a few hundred terms on up to two thousand rows, and the active hats are well apart.
-  const Eigen::MatrixXd gram = a.transpose() * a;
-  const Eigen::VectorXd x = non_negative_least_squares_normal(gram, a.transpose() * b);
+  const Eigen::VectorXd x = numerics::non_negative_least_squares(a, b);
   PassiveBound out;
   out.relative_rms_residual = (a * x - b).norm() / b.norm();
   out.terms = static_cast<int>((x.array() > 0.0).count());
