@@ -2,6 +2,7 @@
 #include "model/passivity.hpp"
 
 #include "core/errors.hpp"
+#include "core/log_grid.hpp"
 #include "model/multipole.hpp"
 #include "model/multipole_surface.hpp"
 
@@ -130,8 +131,8 @@ PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale,
     prev = c;
   }
   w.push_back(prev > 0.0 ? 2.0 * prev : w_ref);
-  const int net = std::max(1, static_cast<int>(std::ceil(net_per_decade * std::log10(hi / lo))));
-  for (int k = 0; k <= net; ++k) w.push_back(lo * std::pow(hi / lo, static_cast<double>(k) / net));
+  const std::vector<double> net = log_grid(lo, hi, net_per_decade);
+  w.insert(w.end(), net.begin(), net.end());
   std::sort(w.begin(), w.end());
   w.erase(std::unique(w.begin(), w.end()), w.end());
   std::vector<double> v;

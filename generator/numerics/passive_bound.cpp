@@ -2,6 +2,7 @@
 #include "numerics/passive_bound.hpp"
 
 #include "core/errors.hpp"
+#include "core/log_grid.hpp"
 #include "numerics/least_squares_inequality.hpp"
 
 #include <algorithm>
@@ -33,14 +34,6 @@ std::complex<double> hat(double w0, double w1, double w2, double w) {
   if (w > w0 && w < w1) re = (w - w0) * rise;
   else if (w >= w1 && w < w2) re = (w2 - w) * fall;
   return {re, piece_imag(-w0 * rise, rise, w0, w1, w) + piece_imag(w2 * fall, -fall, w1, w2, w)};
-}
-
-/// n + 1 log-spaced points from lo to hi, n = ⌈per_decade · log10(hi/lo)⌉.
-std::vector<double> log_grid(double lo, double hi, int per_decade) {
-  const int n = std::max(1, static_cast<int>(std::ceil(per_decade * std::log10(hi / lo))));
-  std::vector<double> g(static_cast<std::size_t>(n) + 1);
-  for (int k = 0; k <= n; ++k) g[static_cast<std::size_t>(k)] = lo * std::pow(hi / lo, static_cast<double>(k) / n);
-  return g;
 }
 
 }  // namespace

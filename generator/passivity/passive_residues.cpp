@@ -2,6 +2,7 @@
 #include "passivity/passive_residues.hpp"
 
 #include "core/errors.hpp"
+#include "core/log_grid.hpp"
 #include "model/passivity.hpp"
 #include "model/residue_basis.hpp"
 #include "numerics/least_squares_inequality.hpp"
@@ -66,8 +67,8 @@ std::vector<double> constraint_grid(const Order& order, const Eigen::VectorXd& t
   if (t.omega.size() > 0) lo = std::min(lo, t.omega.minCoeff()), hi = std::max(hi, t.omega.maxCoeff());
   if (hi > 0.0) {
     lo = std::max(lo * 1e-3, 1e-300), hi *= 1e3;
-    const int n = static_cast<int>(std::ceil(kPointsPerDecade * std::log10(hi / lo)));
-    for (int i = 0; i <= n; ++i) w.push_back(lo * std::pow(hi / lo, double(i) / n));
+    const std::vector<double> grid = log_grid(lo, hi, kPointsPerDecade);
+    w.insert(w.end(), grid.begin(), grid.end());
   }
   std::sort(w.begin(), w.end());
   w.erase(std::unique(w.begin(), w.end()), w.end());
