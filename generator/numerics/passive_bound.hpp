@@ -40,5 +40,4 @@ struct PassiveBound {
 /// over the dictionary above.
 PassiveBound passive_bound(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& values, const Eigen::ArrayXd& weights);
 
-
 }  // namespace admitgen::numerics

@@ -99,7 +99,7 @@ std::string data_clause(const Measurement& data, double estimate_rms, const nume
                                  : data_text + ", so a better passive model may exist at another order or with "
                                                "poles far from the sampled ones";
   const double b = bound->relative_rms_residual;
-  if (estimate_rms > PassiveEstimate::kCostRatio * b)
+  if (!at_passive_bound(estimate_rms, b))
     return fmt::format("{}; a passive admittance of {} terms fits them at {:.3g} % (the passive bound), so a larger "
                        "order may fit better and stay passive",
                        data_text, bound->terms, 100.0 * b);

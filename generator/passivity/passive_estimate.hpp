@@ -92,6 +92,12 @@ struct DataPassivity {
 };
 DataPassivity data_passivity(const Measurement& data);
 
+/// Whether a passive estimate with this residual is what passivity allows on the data: within kCostRatio of the
+/// data's passive bound (docs/passivity.md, "The passive bound").
+inline bool at_passive_bound(double estimate_rms, double bound_rms) {
+  return estimate_rms <= PassiveEstimate::kCostRatio * bound_rms;
+}
+
 /// One line for the terminal and fit.json's warnings when the estimate costs more than kCostRatio: the cost
 /// in nats and in RMS residual, and cost_reason. Empty when it costs less.
 std::string passivity_cost_warning(const Order& order, const PassiveEstimate& e);

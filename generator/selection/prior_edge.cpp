@@ -44,7 +44,7 @@ std::string tail_warning(const ModelResult& model, const PriorRanges& priors, co
       model.order.name(), fmt::join(tail, ", "), priors.admittance_scale, model.order.name());
   const auto& e = model.passive;
   if (e.passive_bound_relative_rms_residual &&
-      e.relative_rms_residual <= passivity::PassiveEstimate::kCostRatio * *e.passive_bound_relative_rms_residual)
+      passivity::at_passive_bound(e.relative_rms_residual, *e.passive_bound_relative_rms_residual))
     return fmt::format("{}; they are not physical: no passive admittance found fits these data better than {:.3g} % "
                        "(the passive bound) where the best sample reaches {:.3g} %, so the tail values buy a fit with "
                        "Re G < 0; check the measurement rather than raise {}",
