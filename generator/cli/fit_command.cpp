@@ -122,11 +122,12 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
   add_parsed_option(*sub, "--likelihood-k", s.data_count, parse_data_count,
                     "Real data per complex point: 2N (default) or N (the paper's)")
       ->check(CLI::IsMember({"2N", "N"}))->default_str(s.data_count == DataCount::two_per_point ? "2N" : "N");
-  sub->add_option("--dlogz", s.sampler.dlogz, "Stop when the live points can change ln Z by less than this")
-      ->check(CLI::Range(1e-6, 10.0))->capture_default_str();
+  sub->add_option("--dlogz", s.sampler.dlogz,
+                  "Stop when the live points can change ln Z by less than this (default 0.01 + 0.001 (live - 1))")
+      ->check(CLI::Range(1e-6, 10.0));
   sub->add_option("--max-iterations", s.sampler.max_iterations, "Iteration cap per order (safety net)")
       ->check(CLI::Range(1L, 100'000'000L))->capture_default_str();
-  sub->add_option("--slices", s.sampler.slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
+  sub->add_option("--slices", s.sampler.slices, "Slice moves per replacement (0 = automatic: 1 + dim/2 for the pole sampler, 3 + dim for the full sampler)")->check(CLI::Range(0, 1000))->capture_default_str();
   sub->add_option("--grid-growth", s.grid_growth,
                   "When the selected order lies on the edge of the grid (Q = --qmax or S = --smax), add up to this many "
                   "real poles and as many pairs, one row or column at a time, while the data select them and the "
@@ -166,6 +167,8 @@ int run_fit_command(const FitCommand& o) {
   if (!o.quiet) {
     print_summary(fit, data);
     for (const auto& w : *record.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
+    if (record.notes)
+      for (const auto& n : *record.notes) fmt::print(stderr, "note: {}\n", spelled(n));
     const auto& chosen = fit.models[fit.selected];
     fmt::print("selected {} ({}); wrote {}\n", chosen.order.name(), settings.rule.describe(), path);
     fmt::print("passive estimate of {} (what emit uses): relative RMS residual {:.3g} % (best sample {:.3g} %), {}\n",

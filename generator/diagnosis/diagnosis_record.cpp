@@ -105,7 +105,7 @@ VerdictRecord verdict_record(const Verdict& v) {
 DiagnosisSettingsRecord settings_record(const Diagnosis& d) {
   DiagnosisSettingsRecord r;
   r.live = d.settings.sampler.live;
-  r.dlogz = d.settings.sampler.dlogz;
+  r.dlogz = d.settings.sampler.stop_dlogz();
   r.seed = d.settings.sampler.seed;
   r.evidence = describe_evidence_methods(d.settings);
   r.likelihood = "marginal-gaussian (noise std marginalised, Jeffreys prior), K = 2N, "

@@ -259,7 +259,7 @@ std::vector<EffectResult> evaluate(const std::vector<EffectCandidate>& candidate
   std::vector<ComparisonJob> jobs;
   for (const auto& c : candidates)
     jobs.push_back({c.label(), is_sampled(c, settings) ? 10.0 * static_cast<double>(c.priors.size()) : 1.0,
-                    settings.sampler.dlogz});
+                    settings.sampler.stop_dlogz()});
   Comparison comparison(progress, settings.threads, "candidates");
   const std::vector<TaskTime> times = comparison.run(
       jobs, schedule(candidates, likelihood, cheap, sampled, settings.threads),

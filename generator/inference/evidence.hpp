@@ -31,4 +31,18 @@ inline double deciban_error(double log_z_error_i, double log_z_error_j) {
   return 10.0 / std::log(10.0) * std::hypot(log_z_error_i, log_z_error_j);
 }
 
+/// Running evidence and information of weighted points (Skilling 2006, eq. 17 for H): add(ln w_i, ln L_i)
+/// per point; log_z = ln Σ w_i and h = Σ (w_i/Z) ln(L_i/Z).
+struct EvidenceAccumulator {
+  double log_z = -std::numeric_limits<double>::infinity();
+  double h = 0.0;
+  void add(double log_w, double log_l) {
+    const double new_log_z = log_add_exp(log_z, log_w);
+    const double h_part = std::exp(log_w - new_log_z) * log_l;
+    const double h_prev = log_z == -std::numeric_limits<double>::infinity() ? 0.0 : std::exp(log_z - new_log_z) * (h + log_z);
+    h = h_part + h_prev - new_log_z;
+    log_z = new_log_z;
+  }
+};
+
 }  // namespace admitgen

@@ -22,19 +22,6 @@ namespace {
 
 constexpr double kMinusInf = -std::numeric_limits<double>::infinity();
 
-/// Running evidence and information (Skilling 2006, eq. 17 for H).
-struct EvidenceAccumulator {
-  double log_z = kMinusInf;
-  double h = 0.0;
-  void add(double log_w, double log_l) {
-    const double new_log_z = log_add_exp(log_z, log_w);
-    const double h_part = std::exp(log_w - new_log_z) * log_l;
-    const double h_prev = log_z == kMinusInf ? 0.0 : std::exp(log_z - new_log_z) * (h + log_z);
-    h = h_part + h_prev - new_log_z;
-    log_z = new_log_z;
-  }
-};
-
 /// The initial live points, drawn from the prior by rejection of ln L = −∞. That value marks a point
 /// outside the support (e.g. a prior truncated to passive models), so the run samples the prior
 /// restricted to the support and ln Z is the evidence under that renormalised prior; draws/accepted
@@ -129,7 +116,7 @@ class Compression {
 /// contour), so the choice sets the cost. The ellipsoid serves while its likelihood calls per replacement
 /// since the last covariance update stay below a slice chain's running mean (EllipsoidProposal::pays); a
 /// replacement for which it finds nothing within a slice chain's mean calls moves by slices instead, and those
-/// calls are charged to it. Where the contour is nearly ellipsoidal one or two calls replace 3 + dim slices;
+/// calls are charged to it. Where the contour is nearly ellipsoidal one or two calls replace a slice chain;
 /// where it is far from it, slices serve (docs/method.md, "Sampler and evidence error").
 class Replacement {
  public:
@@ -137,7 +124,7 @@ class Replacement {
       : cov_interval_(settings.covariance_interval > 0 ? settings.covariance_interval
                                                        : std::max(1, settings.live / 10)),
         min_cluster_(std::max(2 * model.dim(), 20)),
-        slices_(model, settings.slices > 0 ? settings.slices : 3 + model.dim()) {
+        slices_(model, settings.slices_per_replacement(model.dim())) {
     if (settings.ellipsoid_draws) ellipsoids_.emplace(model, settings.ellipsoid_enlarge);
   }
 
@@ -174,6 +161,24 @@ class Replacement {
 
 }  // namespace
 
+int slice_count(SliceRule rule, int dim) {
+  switch (rule) {
+    case SliceRule::three_plus_dim: return 3 + dim;
+    case SliceRule::one_plus_half_dim: return 1 + dim / 2;
+  }
+  return 3 + dim;
+}
+
+const char* describe(SliceRule rule) {
+  switch (rule) {
+    case SliceRule::three_plus_dim: return "3 + dim";
+    case SliceRule::one_plus_half_dim: return "1 + dim/2";
+  }
+  return "3 + dim";
+}
+
+double automatic_dlogz(int live) { return 0.01 + 0.001 * (live - 1); }
+
 NestedRun run_nested_sampling(const Model& model, const NestedSettings& settings, const NestedProgressFn& progress,
                               const NestedStopFn& stop) {
   ADMITGEN_ENSURE(model.dim() >= 1, "dimension {}", model.dim());
@@ -190,7 +195,7 @@ NestedRun run_nested_sampling(const Model& model, const NestedSettings& settings
     run.iterations = it + 1;
     const NestedStatus status = compression.status(it, live, run.calls);
     if (progress && it % 100 == 0) progress(status);
-    const bool converged = status.remaining < settings.dlogz;
+    const bool converged = status.remaining < settings.stop_dlogz();
     if (converged || (stop && stop(status))) {
       run.stopped_by = converged ? "dlogz" : "early_stop";
       live.log_l[worst] = kMinusInf;  // already dead: not a live point

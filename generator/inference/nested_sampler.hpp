@@ -14,16 +14,35 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace admitgen {
 
+/// How many 1-D slices a replacement makes when NestedSettings::slices is 0 (docs/method.md, "Sampler and
+/// evidence error").
+enum class SliceRule {
+  three_plus_dim,     ///< 3 + dim, as dynesty's rslice (Speagle 2020): the full sampler
+  one_plus_half_dim,  ///< 1 + ⌊dim/2⌋: the pole sampler, whose ln Z and its scatter over seeds it leaves unchanged
+};
+/// The number of slices `rule` gives in `dim` dimensions.
+int slice_count(SliceRule rule, int dim);
+/// The rule as fit.json and the report write it: "3 + dim" or "1 + dim/2".
+const char* describe(SliceRule rule);
+
+/// The stop dynesty uses by default when the live points close the run (Speagle 2020): 0.01 + 0.001 (n − 1).
+/// The live points then hold at most e^{dlogz} − 1 of the evidence found so far, which the close adds with
+/// their mean likelihood; a lower stop adds iterations of live points that change ln Z by less than its error.
+double automatic_dlogz(int live);
+
 struct NestedSettings {
   int live = 500;                      ///< number of live points n
-  double dlogz = 0.01;                 ///< stop when ln(Z + X·L_max) − ln Z < dlogz
+  /// Stop when ln(Z + X·L_max) − ln Z < dlogz; unset: automatic_dlogz(live) (stop_dlogz()).
+  std::optional<double> dlogz;
   long max_iterations = 1'000'000;     ///< safety cap on deaths
-  int slices = 0;                      ///< 1-D slices per replacement; 0 = automatic (3 + dim)
+  int slices = 0;                      ///< 1-D slices per replacement; 0 = automatic (slice_rule)
+  SliceRule slice_rule = SliceRule::three_plus_dim;
   std::uint64_t seed = 1;
   int covariance_interval = 0;         ///< iterations between covariance updates; 0 = live/10
   /// Constrained step by uniform draws in the live points' bounding ellipsoid (inference/ellipsoid_union.hpp),
@@ -33,6 +52,11 @@ struct NestedSettings {
   bool ellipsoid_draws = false;
   /// Volume of each bounding ellipsoid over the tightest one of its shape that holds its cluster.
   double ellipsoid_enlarge = 2.0;
+
+  /// The stop in force: dlogz, or automatic_dlogz(live) when unset.
+  double stop_dlogz() const { return dlogz ? *dlogz : automatic_dlogz(live); }
+  /// The slices per replacement in force in `dim` dimensions: slices, or slice_rule's count when 0.
+  int slices_per_replacement(int dim) const { return slices > 0 ? slices : slice_count(slice_rule, dim); }
 };
 
 /// Status of a run after a death: for progress display and early stops.
@@ -51,6 +75,9 @@ struct NestedRun {
   std::vector<double> samples;         ///< row-major, one row of dim θ values per point (dead, then final live)
   std::vector<double> log_likelihood;  ///< per point
   std::vector<double> log_weight;      ///< ln(L_i ΔX_i), unnormalised; posterior p_i = exp(log_weight_i − log_z)
+  /// The likelihood the run sampled, per point, where log_likelihood holds another (the pole sampler's
+  /// marginal ln L(ψ), inference/poles_sampler.hpp); empty when log_likelihood is it.
+  std::vector<double> sampled_log_likelihood;
   double log_z = 0.0;
   double log_z_error = 0.0;            ///< √(H/n)
   double information = 0.0;            ///< H in nats

@@ -52,11 +52,13 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
   // at a fraction of the calls (inference/ellipsoid_union.hpp).
   NestedSettings pole_settings = settings;
   pole_settings.ellipsoid_draws = true;
+  pole_settings.slice_rule = kPoleSliceRule;
   const NestedRun poles = dim == 0 ? analytic_run(evidence, settings.live)
                                    : run_nested_sampling(pole_model(order, transform, evidence), pole_settings, progress);
 
   NestedRun run = poles;
   run.dim = order.dim();
+  run.sampled_log_likelihood = poles.log_likelihood;
   run.samples.assign(poles.size() * static_cast<std::size_t>(order.dim()), 0.0);
   const Likelihood likelihood(data, order, count);
   const Eigen::ArrayXd weight = posterior_weights(poles);
@@ -65,7 +67,7 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
   // S₀ (the highest ln L with residues free). The marginal's own peak is a different ψ wherever the prior
   // shrinks residues, as it does for a spare pair that could fit noise with large ones; the best fit is
   // what the missed-mode checks compare across orders (docs/method.md, "Model selection").
-  double best = std::numeric_limits<double>::infinity();
+  double best = std::numeric_limits<double>::infinity(), best_marginal = best;
   std::vector<double> best_theta;
   for (std::size_t i = 0; i < poles.size(); ++i) {
     const double* psi = dim == 0 ? nullptr : poles.point(i);
@@ -77,6 +79,7 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
     }
     if (c.s0 < best) {
       best = c.s0;
+      best_marginal = c.log_evidence;
       best_theta.assign(static_cast<std::size_t>(order.dim()), 0.0);
       assemble_theta(order, psi, least_squares_residues(c), best_theta.data());
     }
@@ -89,6 +92,7 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
   if (!best_theta.empty()) {
     run.samples.insert(run.samples.end(), best_theta.begin(), best_theta.end());
     run.log_likelihood.push_back(likelihood(best_theta.data()));
+    run.sampled_log_likelihood.push_back(best_marginal);
     run.log_weight.push_back(-std::numeric_limits<double>::infinity());
   }
   run.max_log_likelihood = *std::max_element(run.log_likelihood.begin(), run.log_likelihood.end());

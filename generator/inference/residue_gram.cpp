@@ -153,15 +153,31 @@ void residue_gram(const GramPoints& points, int q, int s, const double* poles, d
   }
   // H_ab = Σ conj(z_a) z_b. By partial fractions (docs/method.md, "Residues given the poles"):
   //   conj(z_a) z_b = 1/((P̄_a − jω)(P_b + jω)) = [1/(P̄_a − jω) + 1/(P_b + jω)]/(P̄_a + P_b),
-  // so H_ab = (conj T_a + T_b)/(P̄_a + P_b), Re(P̄_a + P_b) > 0; H_0b = T_b, H_00 = N.
+  // so H_ab = (conj T_a + T_b)/(P̄_a + P_b), Re(P̄_a + P_b) > 0; H_0b = T_b, H_00 = N. H is Hermitian
+  // (H_ba = conj H_ab): the lower triangle a ≥ b is computed once, each entry then used by every M_uv whose
+  // loadings name it (a pair's B and C both load θ and θ*).
+  const int poles_with_one = 1 + q + 2 * s;
+  // Real and imaginary parts side by side, left uninitialised (a std::complex array would be zeroed on every
+  // call, 20 kB at the largest order): only entries a ≥ b < poles_with_one are written, and only they are read.
+  std::array<double, kMaxGramResidues * (kMaxGramResidues + 1)> lower;
+  const auto at = [](int a, int b) { return static_cast<std::size_t>(a * (a + 1) + 2 * b); };
+  const auto put = [&](int a, int b, Complex h) {
+    lower[at(a, b)] = h.real();
+    lower[at(a, b) + 1] = h.imag();
+  };
+  for (int a = 0; a < poles_with_one; ++a) {
+    const std::size_t i = static_cast<std::size_t>(a);
+    put(a, 0, a == 0 ? t[0] : std::conj(t[i]));
+    for (int b = 1; b <= a; ++b) {
+      const std::size_t k = static_cast<std::size_t>(b);
+      // Division by c = P̄_a + P_b as multiplication by c̄/|c|² (c is never tiny, never infinite: no need of the
+      // scaled complex division of C99 Annex G).
+      const Complex c = std::conj(pole[i]) + pole[k];
+      put(a, b, (std::conj(t[i]) + t[k]) * std::conj(c) / std::norm(c));
+    }
+  }
   const auto gram = [&](int a, int b) -> Complex {
-    const std::size_t i = static_cast<std::size_t>(a), k = static_cast<std::size_t>(b);
-    if (a == 0) return t[k];
-    if (b == 0) return std::conj(t[i]);
-    // Division by c = P̄_a + P_b as multiplication by c̄/|c|² (c is never tiny, never infinite: no need of the
-    // scaled complex division of C99 Annex G).
-    const Complex c = std::conj(pole[i]) + pole[k];
-    return (std::conj(t[i]) + t[k]) * std::conj(c) / std::norm(c);
+    return a >= b ? Complex(lower[at(a, b)], lower[at(a, b) + 1]) : Complex(lower[at(b, a)], -lower[at(b, a) + 1]);
   };
   // M_uv = Re Σ conj(κ_u) κ_v H_ab over the loadings of u and v (g came from the pass).
   for (int u = 0; u < p; ++u) {

@@ -3,6 +3,7 @@
 
 #include "core/bounded_read.hpp"
 #include "core/errors.hpp"
+#include "inference/nested_sampler.hpp"
 #include "io/record_fields.hpp"
 #include "model/order.hpp"
 
@@ -27,15 +28,20 @@ struct OrderName {
   }
 };
 
-/// The number of slices, or "3 + dim" when automatic (empty).
+/// The number of slices, or when automatic (empty) the rule that set it, "3 + dim" or "1 + dim/2"
+/// (inference/nested_sampler.hpp, SliceRule), held in `rule`.
 struct Slices {
-  Json write(const std::optional<std::int64_t>& slices) const { return slices ? Json(*slices) : Json("3 + dim"); }
+  std::string& rule;
+  Json write(const std::optional<std::int64_t>& slices) const { return slices ? Json(*slices) : Json(rule); }
   void read(const Field& f, std::optional<std::int64_t>& slices) const {
     slices.reset();
     if (!f.json().is_string()) {
       slices = f.integer();
-    } else if (f.text() != "3 + dim") {
-      f.fail("expected a number of slices or \"3 + dim\"");
+    } else if (f.text() == describe(SliceRule::three_plus_dim) || f.text() == describe(SliceRule::one_plus_half_dim)) {
+      rule = f.text();
+    } else {
+      f.fail(fmt::format("expected a number of slices, \"{}\" or \"{}\"", describe(SliceRule::three_plus_dim),
+                         describe(SliceRule::one_plus_half_dim)));
     }
   }
 };
@@ -85,7 +91,7 @@ void fields(V& v, FitSamplerSettings& s) {
   v("dlogz", s.dlogz);
   v("max_iterations", s.max_iterations);
   v("missed_mode_retries", s.missed_mode_retries);
-  v.custom("slices", s.slices, Slices{});
+  v.custom("slices", s.slices, Slices{s.slices_rule});
   v("residues", s.residues);
   v.ignored("truncation_tolerance_nats");  // written by versions with the residue box's correction
 }
@@ -195,6 +201,7 @@ void fields(V& v, FitRecord& fit) {
   v("parameters", fit.parameters);
   v("predictive", fit.predictive);
   v("warnings", fit.warnings, kPlain);
+  v("notes", fit.notes, kPlain | kOptional);
   v("posterior", fit.posterior);
   v("grid", fit.grid);
 }

@@ -92,7 +92,7 @@ std::size_t run_units(const Library& library, const std::vector<WorkUnit>& units
   std::vector<ComparisonJob> jobs;
   for (const WorkUnit& u : units) {
     const FitSettings& fit = library.materials[u.material].fit;
-    jobs.push_back({u.id, expected_work(u.order, fit, fit.sampler.live), fit.sampler.dlogz});
+    jobs.push_back({u.id, expected_work(u.order, fit, fit.sampler.live), fit.sampler.stop_dlogz()});
   }
   std::vector<double> log_z(units.size()), error(units.size());
   Comparison comparison(progress, threads, "units");

@@ -42,7 +42,8 @@ struct FitSamplerSettings {
   double dlogz = 0.0;
   std::int64_t max_iterations = 0;
   std::optional<std::int64_t> missed_mode_retries;  ///< absent in older fits
-  std::optional<std::int64_t> slices;               ///< empty: automatic ("3 + dim")
+  std::optional<std::int64_t> slices;               ///< empty: automatic, by slices_rule
+  std::string slices_rule = "3 + dim";              ///< the automatic rule ("3 + dim" or "1 + dim/2")
   std::optional<std::string> residues;              ///< absent in older fits
 };
 
@@ -135,6 +136,9 @@ struct FitRecord {
   /// Absent in older fits. Texts may name settings (core/errors.hpp, setting()): writers of files and
   /// reports give them plain_settings(), the command line spells each as its flag.
   std::optional<std::vector<std::string>> warnings;
+  /// Findings that change no result (e.g. a missed mode that re-runs showed holds no evidence); absent when
+  /// there is none, and in older fits.
+  std::optional<std::vector<std::string>> notes;
   std::optional<std::string> posterior;        ///< file name of the posterior index, when written
   std::optional<FitGrid> grid;                 ///< absent when the grid did not grow and the selection is inside it
 

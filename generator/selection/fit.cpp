@@ -5,6 +5,7 @@
 #include "core/parallel.hpp"
 #include "inference/comparison.hpp"
 #include "inference/poles_sampler.hpp"
+#include "inference/run_merge.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
 #include "selection/fit_cost.hpp"
@@ -46,16 +47,20 @@ Model order_model(const Measurement& data, const Order& order, const FitSettings
 
 namespace {
 
-NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round) {
+/// Live points of each run that a re-run round adds (the first run has settings.sampler.live).
+int part_live(int live) { return std::max(2, (live + 1) / 2); }
+
+/// Round 0 is an order's first run; round r ≥ 1 adds 2^r parts of part_live points each on streams of their own.
+NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round, int part) {
   NestedSettings sampler = settings.sampler;
-  sampler.seed = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
-  sampler.live = settings.sampler.live << round;
+  const std::uint64_t stream = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
+  sampler.seed = round == 0 ? stream : derive_seed(stream, static_cast<std::uint64_t>(part) + 1);
+  if (round > 0) sampler.live = part_live(settings.sampler.live);
   return sampler;
 }
 
 ModelResult run_full(const Measurement& data, const Order& order, const FitSettings& settings,
-                     const NestedProgressFn& progress, int round) {
-  const NestedSettings sampler = order_sampler_settings(order, settings, round);
+                     const NestedProgressFn& progress, const NestedSettings& sampler) {
   ModelResult result{order, run_nested_sampling(order_model(data, order, settings), sampler, progress), sampler.live,
                      0.0, {}};
   result.sampler = "full";
@@ -63,8 +68,7 @@ ModelResult run_full(const Measurement& data, const Order& order, const FitSetti
 }
 
 ModelResult run_poles(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress, int round) {
-  const NestedSettings sampler = order_sampler_settings(order, settings, round);
+                      const NestedProgressFn& progress, const NestedSettings& sampler) {
   ModelResult result{order,
                      run_poles_sampler(data, order, settings.priors, settings.reduce_symmetry, settings.data_count,
                                        sampler, derive_seed(sampler.seed, 0x7e51dULL), progress),
@@ -95,14 +99,15 @@ FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
 
 namespace {
 
-/// fit_order without its timing: what the comparison driver runs (and times) for each order of a fit.
+/// fit_order without its timing: what the comparison driver runs (and times) for each run of a fit.
 ModelResult run_order(const Measurement& data, const Order& order, const FitSettings& given,
-                      const NestedProgressFn& progress, int round) {
+                      const NestedProgressFn& progress, int round, int part) {
   const FitSettings settings = with_band_priors(given, data);
+  const NestedSettings sampler = order_sampler_settings(order, settings, round, part);
   std::string note;
   ModelResult result = order_sampler(settings, &note) == SamplerKind::poles
-                           ? run_poles(data, order, settings, progress, round)
-                           : run_full(data, order, settings, progress, round);
+                           ? run_poles(data, order, settings, progress, sampler)
+                           : run_full(data, order, settings, progress, sampler);
   result.sampler_note = note;
   for (std::size_t i = 0; i < result.run.size(); ++i)
     fold_to_reduced(order, result.run.samples.data() + i * static_cast<std::size_t>(order.dim()));
@@ -113,9 +118,9 @@ ModelResult run_order(const Measurement& data, const Order& order, const FitSett
 }  // namespace
 
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress, int round) {
+                      const NestedProgressFn& progress) {
   std::optional<ModelResult> result;
-  const TaskTime time = timed([&] { result.emplace(run_order(data, order, settings, progress, round)); });
+  const TaskTime time = timed([&] { result.emplace(run_order(data, order, settings, progress, 0, 0)); });
   result->seconds = time.seconds;
   result->cpu_seconds = time.cpu_seconds;
   return std::move(*result);
@@ -224,11 +229,6 @@ std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const Fit
   return missed;
 }
 
-/// What a re-run must beat to replace a run: its marginal's peak for the pole sampler, else its best ln L.
-double best_of(const Measurement& data, const FitSettings& settings, const ModelResult& m) {
-  if (!pole_sampled(m)) return m.run.max_log_likelihood;
-  return marginal_peak(data, m.order, m.run, m.live, settings.priors, settings.data_count).log_l;
-}
 
 }  // namespace
 
@@ -261,22 +261,48 @@ std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings&
   return missed;
 }
 
+namespace {
+
+/// "Q1S3: the peak of ln L(poles) … 1281.9 is below 1284.3 reached by …": what a missed mode shows.
+std::string missed_mode_finding(const std::vector<ModelResult>& models, const MissedMode& m) {
+  const ModelResult &run = models[m.order], &shown = models[m.contained];
+  const std::string reached =
+      m.marginal ? (m.larger ? "reached by the peak of the larger order" : "reached by the peak of the nested order")
+                 : (m.larger ? "reached by the best model of the larger order" : "of the nested order");
+  const std::string how =
+      m.marginal ? (m.larger ? " with its surplus poles dropped" : " completed by the larger order's surplus poles")
+                 : (m.larger ? " with its surplus terms dropped" : "");
+  return fmt::format("{}: {} {:.1f} is below {:.1f} {} {}{}", run.order.name(),
+                     m.marginal ? "the peak of ln L(poles) (residues and noise integrated out)" : "best ln L",
+                     m.own_log_l, m.reference_log_l, reached, shown.order.name(), how);
+}
+
+bool settled(const ModelResult& m) { return m.rerun && m.rerun->settled(); }
+
+}  // namespace
+
+std::vector<std::string> missed_mode_notes(const std::vector<ModelResult>& models, const std::vector<MissedMode>& missed) {
+  std::vector<std::string> notes;
+  for (const MissedMode& m : missed) {
+    const ModelResult& run = models[m.order];
+    if (!settled(run)) continue;
+    notes.push_back(fmt::format(
+        "{}; runs adding {} live points did not reach it either and left ln Z where it was ({:+.2f} ± {:.2f} "
+        "nats): that point lies in a region holding no evidence that more live points find, and ln Z of {} stands",
+        missed_mode_finding(models, m), run.rerun->live, run.rerun->log_z_shift, run.rerun->error, run.order.name()));
+  }
+  return notes;
+}
+
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models,
                                               const std::vector<MissedMode>& missed) {
   std::vector<std::string> warnings;
   for (const MissedMode& m : missed) {
-    const ModelResult &run = models[m.order], &shown = models[m.contained];
-    const std::string reached =
-        m.marginal ? (m.larger ? "reached by the peak of the larger order" : "reached by the peak of the nested order")
-                   : (m.larger ? "reached by the best model of the larger order" : "of the nested order");
-    const std::string how =
-        m.marginal ? (m.larger ? " with its surplus poles dropped" : " completed by the larger order's surplus poles")
-                   : (m.larger ? " with its surplus terms dropped" : "");
-    warnings.push_back(fmt::format(
-        "{}: {} {:.1f} is below {:.1f} {} {}{}; the sampler missed a mode of {}, whose ln Z is "
-        "underestimated (rerun with more live points, {})",
-        run.order.name(), m.marginal ? "the peak of ln L(poles) (residues and noise integrated out)" : "best ln L",
-        m.own_log_l, m.reference_log_l, reached, shown.order.name(), how, run.order.name(), setting("sampler.live")));
+    const ModelResult& run = models[m.order];
+    if (settled(run)) continue;
+    warnings.push_back(fmt::format("{}; the sampler missed a mode of {}, whose ln Z is underestimated (rerun with "
+                                   "more live points, {})",
+                                   missed_mode_finding(models, m), run.order.name(), setting("sampler.live")));
   }
   return warnings;
 }
@@ -302,55 +328,109 @@ std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
 
 namespace {
 
-/// Runs the orders grid[i] for i in `which` on the comparison driver (inference/comparison.hpp), largest first,
-/// writing results[i]; order i runs with 2^round[i] times the live points and that round's seed stream.
-void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
-                const std::vector<std::size_t>& which, const std::vector<int>& round,
-                std::vector<ModelResult>& results, Progress& progress) {
-  std::vector<std::size_t> queue = which;
-  std::stable_sort(queue.begin(), queue.end(), [&](auto a, auto b) { return grid[a].dim() > grid[b].dim(); });
+/// One run of the comparison driver: order grid[order]'s first run (round 0) or part `part` of re-run round
+/// `round`.
+struct RunTask {
+  std::size_t order;
+  int round = 0, part = 0;
+};
+
+/// Runs `tasks` on the comparison driver (inference/comparison.hpp), largest order first; returns one result
+/// per task, timed.
+std::vector<ModelResult> run_tasks(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
+                                   const std::vector<RunTask>& tasks, Progress& progress) {
+  std::vector<std::size_t> queue(tasks.size());
+  std::iota(queue.begin(), queue.end(), std::size_t{0});
+  std::stable_sort(queue.begin(), queue.end(),
+                   [&](auto a, auto b) { return grid[tasks[a].order].dim() > grid[tasks[b].order].dim(); });
   std::vector<ComparisonJob> jobs;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    const Order& o = grid[i];
-    jobs.push_back({o.name(), expected_work(o, settings, settings.sampler.live << round[i]), settings.sampler.dlogz});
+  for (const RunTask& t : tasks) {
+    const Order& o = grid[t.order];
+    const NestedSettings sampler = order_sampler_settings(o, settings, t.round, t.part);
+    jobs.push_back({t.round == 0 ? o.name() : fmt::format("{} (+{})", o.name(), t.part + 1),
+                    expected_work(o, settings, sampler.live), sampler.stop_dlogz()});
   }
-  Comparison comparison(progress, settings.threads, "orders");
+  std::vector<ModelResult> results(tasks.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
+  Comparison comparison(progress, settings.threads, "runs");
   const auto times = comparison.run(
       jobs, queue,
-      [&](std::size_t i, const NestedProgressFn& status) {
-        results[i] = run_order(data, grid[i], settings, status, round[i]);
+      [&](std::size_t k, const NestedProgressFn& status) {
+        results[k] = run_order(data, grid[tasks[k].order], settings, status, tasks[k].round, tasks[k].part);
       },
-      [&](std::size_t i, const TaskTime& time) {
-        const ModelResult& m = results[i];
-        return fmt::format("  {:<5} ln Z = {:10.2f} ± {:.2f}  ({} calls, {:.1f} s)", m.order.name(), m.run.log_z,
+      [&](std::size_t k, const TaskTime& time) {
+        const ModelResult& m = results[k];
+        return fmt::format("  {:<9} ln Z = {:10.2f} ± {:.2f}  ({} calls, {:.1f} s)", jobs[k].label, m.run.log_z,
                            m.run.log_z_error, m.run.calls, time.seconds);
       });
-  for (std::size_t i : queue) {
-    results[i].seconds = times[i].seconds;
-    results[i].cpu_seconds = times[i].cpu_seconds;
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
+    results[k].seconds = times[k].seconds;
+    results[k].cpu_seconds = times[k].cpu_seconds;
   }
+  return results;
 }
 
-/// Re-runs orders that missed a mode (missed_modes), in rounds r = 1 … missed_mode_retries with 2^r times the
-/// live points; an order runs round r at most once (`rounds[i]`: the last round order i ran), so calling this
-/// again after the grid grew re-runs only what the new orders reveal.
+/// First runs of the orders grid[i] for i in `which`, written to results[i].
+void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
+                const std::vector<std::size_t>& which, std::vector<ModelResult>& results, Progress& progress) {
+  std::vector<RunTask> tasks;
+  for (std::size_t i : which) tasks.push_back({i, 0, 0});
+  std::vector<ModelResult> done = run_tasks(data, settings, grid, tasks, progress);
+  for (std::size_t k = 0; k < tasks.size(); ++k) results[tasks[k].order] = std::move(done[k]);
+}
+
+/// `model` with `parts` merged into its run (inference/run_merge.hpp): live points, calls and times add up.
+ModelResult merged_with(const ModelResult& model, const std::vector<const ModelResult*>& parts) {
+  std::vector<RunPart> runs{{&model.run, model.live}};
+  ModelResult merged = model;
+  for (const ModelResult* p : parts) {
+    runs.push_back({&p->run, p->live});
+    merged.live += p->live;
+    merged.seconds += p->seconds;
+    merged.cpu_seconds += p->cpu_seconds;
+  }
+  merged.run = merge_runs(runs);
+  merged.parameters = summarize(merged.run, model.order.parameter_names());
+  return merged;
+}
+
+/// Re-runs orders that missed a mode (missed_modes), in rounds r = 1 … missed_mode_retries: round r adds 2^r
+/// runs of part_live points on streams of their own to the order's run and merges them with it
+/// (inference/run_merge.hpp), so that after round r it holds about 2^r times the live points, as one run of
+/// that many would, at half the calls of such a run and with its parts in parallel. An order runs round r at
+/// most once (`rounds[i]`: the last round order i ran), so calling this again after the grid grew re-runs only
+/// what the new orders reveal. An order without poles (its evidence analytic) has no mode to miss.
 void rerun_missed_modes(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
                         std::vector<ModelResult>& results, std::vector<int>& rounds, Progress& progress) {
   for (int round = 1; round <= settings.missed_mode_retries; ++round) {
     std::vector<std::size_t> which;
     for (const MissedMode& m : missed_modes(data, settings, results))
-      if (rounds[m.order] < round) which.push_back(m.order);
+      if (rounds[m.order] < round && results[m.order].run.stopped_by != "analytic" && !settled(results[m.order]))
+        which.push_back(m.order);
     if (which.empty()) continue;
-    progress.message(fmt::format("re-running {} order(s) that missed a mode, with {} live points", which.size(),
-                                 settings.sampler.live << round));
-    std::vector<ModelResult> again = results;
-    const std::vector<int> at(grid.size(), round);
-    run_orders(data, settings, grid, which, at, again, progress);
-    // Keep the re-run only where it reached a higher likelihood (it cannot be worse evidence-wise
-    // for a run that found the mode the first one missed).
+    const int parts = 1 << round;
+    progress.message(fmt::format("re-running {} order(s) that missed a mode: {} more runs of {} live points each",
+                                 which.size(), parts, part_live(settings.sampler.live)));
+    std::vector<RunTask> tasks;
+    for (std::size_t i : which)
+      for (int k = 0; k < parts; ++k) tasks.push_back({i, round, k});
+    const std::vector<ModelResult> done = run_tasks(data, settings, grid, tasks, progress);
     for (std::size_t i : which) {
+      std::vector<const ModelResult*> mine;
+      std::vector<RunPart> added;
+      for (std::size_t k = 0; k < tasks.size(); ++k)
+        if (tasks[k].order == i) {
+          mine.push_back(&done[k]);
+          added.push_back({&done[k].run, done[k].live});
+        }
+      // The added runs on their own against the order's run before them: independent estimates of one ln Z.
+      const NestedRun fresh = merge_runs(added);
+      RerunCheck check;
+      check.log_z_shift = fresh.log_z - results[i].run.log_z;
+      check.error = std::hypot(fresh.log_z_error, results[i].run.log_z_error);
+      for (const RunPart& p : added) check.live += p.live;
+      results[i] = merged_with(results[i], mine);
+      results[i].rerun = check;
       rounds[i] = round;
-      if (best_of(data, settings, again[i]) > best_of(data, settings, results[i])) results[i] = std::move(again[i]);
     }
   }
 }
@@ -399,7 +479,7 @@ GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::
       merged[i] = std::move(results[j]);
       merged_rounds[i] = rounds[j];
     }
-    run_orders(data, settings, grown, added, merged_rounds, merged, progress);
+    run_orders(data, settings, grown, added, merged, progress);
     grid = std::move(grown);
     results = std::move(merged);
     rounds = std::move(merged_rounds);
@@ -424,7 +504,7 @@ std::vector<ModelResult> run_first_round(const Measurement& data, const FitSetti
   std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
   std::vector<std::size_t> which(grid.size());
   std::iota(which.begin(), which.end(), std::size_t{0});
-  run_orders(data, settings, grid, which, std::vector<int>(grid.size(), 0), results, progress);
+  run_orders(data, settings, grid, which, results, progress);
   return results;
 }
 
@@ -447,7 +527,9 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_passes, progress);
   fit.selected = select_order(settings, results);
   fit.models = std::move(results);
-  fit.warnings = missed_mode_warnings(fit.models, missed_modes(data, settings, fit.models));
+  const std::vector<MissedMode> missed = missed_modes(data, settings, fit.models);
+  fit.warnings = missed_mode_warnings(fit.models, missed);
+  fit.notes = missed_mode_notes(fit.models, missed);
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
   // One task per order, each writing its own slot: the same bits at any thread count (docs/method.md, "Determinism").
   std::vector<std::size_t> orders(fit.models.size());

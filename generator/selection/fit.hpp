@@ -18,6 +18,10 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace admitgen {
@@ -69,6 +73,20 @@ struct FitSettings {
 /// fit.json's per-model "sampler" of runs by the pole sampler (inference/poles_sampler.hpp).
 inline constexpr const char* kPoleSamplerName = "poles_analytic_residues";
 
+/// What a round of re-runs for a missed mode showed (selection/fit.cpp, rerun_missed_modes): the ln Z of the
+/// runs it added, on their own, against the ln Z the order had before. Where the two agree, the point of higher
+/// marginal that flagged the order lies in a region that holds no evidence more live points find: ln Z stands,
+/// and the fit says so in a note rather than a warning (docs/method.md, "Model selection").
+struct RerunCheck {
+  /// Agreement: within two errors of the difference, or within 1 nat (4.3 dB, under half the default selection
+  /// rule's 10 dB margin) where the runs' scatter exceeds their reported errors (docs/validation.md, "Speed").
+  static constexpr double kErrors = 2.0, kNats = 1.0;
+  double log_z_shift = 0.0;  ///< ln Z of the added runs minus the order's ln Z before them
+  double error = 0.0;        ///< error of that difference (independent runs)
+  int live = 0;              ///< live points of the added runs together
+  bool settled() const { return std::abs(log_z_shift) <= std::max(kErrors * error, kNats); }
+};
+
 struct ModelResult {
   Order order;
   NestedRun run;
@@ -82,6 +100,7 @@ struct ModelResult {
   /// Why the full sampler ran when the pole sampler was asked for (empty otherwise).
   std::string sampler_note{};
   double cpu_seconds = 0.0;  ///< CPU time of the thread that ran it (for benchmarks on a loaded machine; not stored)
+  std::optional<RerunCheck> rerun{};  ///< the last round of re-runs for a missed mode, if any
 };
 
 /// Posterior predictive band at the data frequencies: 2.5 %, 50 %, 97.5 % quantiles.
@@ -106,6 +125,7 @@ struct FitResult {
   std::size_t selected = 0;
   PredictiveBand predictive;        ///< of the selected order
   std::vector<std::string> warnings;  ///< e.g. missed modes (see missed_mode_warnings)
+  std::vector<std::string> notes;     ///< missed modes that re-runs showed hold no evidence (missed_mode_notes)
   GridGrowth grid;
 };
 
@@ -133,6 +153,9 @@ std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, dou
 /// The readable form of a missed_modes result, one warning per order.
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models,
                                               const std::vector<MissedMode>& missed);
+/// The missed modes whose order's last re-run round settled (RerunCheck::settled): a point of higher marginal
+/// exists, and runs with more live points left ln Z where it was. missed_mode_warnings skips these.
+std::vector<std::string> missed_mode_notes(const std::vector<ModelResult>& models, const std::vector<MissedMode>& missed);
 /// missed_mode_warnings of the check by contained orders alone.
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance = 2.0);
 
@@ -156,10 +179,9 @@ std::uint64_t order_seed(std::uint64_t user_seed, const Order& order);
 /// work buffers).
 Model order_model(const Measurement& data, const Order& order, const FitSettings& settings);
 
-/// Runs one order: nested sampling plus folded summaries. `round` > 0 re-runs with 2^round times the
-/// live points and its own seed stream.
+/// Runs one order: nested sampling plus folded summaries (a fit's first run of it).
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
-                      const NestedProgressFn& progress = {}, int round = 0);
+                      const NestedProgressFn& progress = {});
 
 /// The `n` highest-likelihood samples of a run (folded), best first.
 std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n);

@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "inference/pole_space.hpp"
+#include "inference/poles_sampler.hpp"
 #include "inference/residue_evidence.hpp"
 #include "selection/grid_growth.hpp"
 
@@ -68,7 +69,9 @@ std::string duration(double seconds) {
 double expected_evaluations(const Order& order, const FitSettings& settings, int live) {
   const bool poles = order_sampler(settings) == SamplerKind::poles;
   const double dim = poles ? pole_count(order) : order.dim();
-  const double slices = settings.sampler.slices > 0 ? settings.sampler.slices : 3.0 + dim;
+  NestedSettings sampler = settings.sampler;
+  if (poles) sampler.slice_rule = kPoleSliceRule;
+  const double slices = sampler.slices_per_replacement(static_cast<int>(dim));
   return (poles ? kPoleEvaluationsPerLiveDimSlice : kEvaluationsPerLiveDimSlice) * live * dim * slices;
 }
 

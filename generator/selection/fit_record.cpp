@@ -3,6 +3,7 @@
 
 #include "core/version.hpp"
 #include "inference/evidence.hpp"
+#include "inference/poles_sampler.hpp"
 #include "selection/goodness_of_fit.hpp"
 #include "selection/prior_edge.hpp"
 
@@ -57,10 +58,11 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
                            "bounding ellipsoid while they form one cluster and the draws cost fewer calls, the other "
                            "steps are slices along whitened random directions"
                          : "nested sampling, slice steps along whitened random directions";
-  r.sampler.dlogz = s.sampler.dlogz;
+  r.sampler.dlogz = s.sampler.stop_dlogz();
   r.sampler.max_iterations = s.sampler.max_iterations;
   r.sampler.missed_mode_retries = s.missed_mode_retries;
   if (s.sampler.slices > 0) r.sampler.slices = s.sampler.slices;
+  r.sampler.slices_rule = describe(order_sampler(s) == SamplerKind::poles ? kPoleSliceRule : s.sampler.slice_rule);
   r.sampler.residues = order_sampler(s) == SamplerKind::poles
                            ? "integrated exactly with the noise (poles sampled; residues and noise drawn from their "
                              "conditional)"
@@ -155,6 +157,7 @@ FitRecord fit_record(const Measurement& data, const ReadOptions& read, const Fit
   if (const auto poor = poor_fit_warning(chosen.order.name(), goodness_of_fit(data, chosen))) warnings.push_back(*poor);
   if (const auto edge = prior_edge_warning(chosen, settings.priors)) warnings.push_back(*edge);
   r.warnings = warnings;
+  if (!fit.notes.empty()) r.notes = fit.notes;
   if (!fit.grid.steps.empty() || !fit.grid.edge.empty()) {
     FitGrid g{fit.grid.qmax, fit.grid.smax, fit.grid.steps, {}};
     if (!fit.grid.edge.empty()) g.edge = fit.grid.edge;

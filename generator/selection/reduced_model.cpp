@@ -90,6 +90,11 @@ MarginalPeak marginal_peak(const Measurement& data, const Order& order, const Ne
                            const PriorRanges& priors, DataCount count) {
   MarginalPeak peak;
   if (run.size() == 0) return peak;
+  if (!run.sampled_log_likelihood.empty()) {  // the pole sampler's own values: no evaluation needed
+    for (std::size_t i = 0; i < run.size(); ++i)
+      if (run.sampled_log_likelihood[i] > peak.log_l) peak = {i, run.sampled_log_likelihood[i]};
+    return peak;
+  }
   const ResidueEvidence evidence(data, order, count, priors.admittance_scale);
   const std::size_t first = run.size() > static_cast<std::size_t>(live) + 1 ? run.size() - static_cast<std::size_t>(live) - 1 : 0;
   std::vector<double> psi;

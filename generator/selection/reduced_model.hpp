@@ -42,7 +42,8 @@ struct MarginalPeak {
   double log_l = -std::numeric_limits<double>::infinity();  ///< ln L(ψ) there
 };
 /// The highest marginal over a run's final `live` points and anything after them (where nested sampling
-/// ends); log_l = −∞ for an empty run.
+/// ends), read from NestedRun::sampled_log_likelihood where the run holds it (then over all its points);
+/// log_l = −∞ for an empty run.
 MarginalPeak marginal_peak(const Measurement& data, const Order& order, const NestedRun& run, int live,
                            const PriorRanges& priors, DataCount count);
 /// The highest marginal of `small` over every way of dropping surplus poles of θ' (order `big`).

@@ -7,19 +7,19 @@
  *
  * Continuous model (time dependence e^{+jwt}; G = rho c v_n / p normalised admittance, v_n into the wall):
  *   G(s) = G_inf + sum_q A_q/(lambda_q + s) + sum_s [(B_s + jC_s)/(alpha_s + j beta_s + s) + (B_s - jC_s)/(alpha_s - j beta_s + s)]
- *   G_inf = 0.7350118615306744
- *   B_1 = -91.69483830212607
- *   C_1 = -113.77739046284167
- *   alpha_1 = 573.6145624519456
- *   beta_1 = 3358.5138357519136
- *   B_2 = 1712.5847361127082
- *   C_2 = -9358.462166399155
- *   alpha_2 = 6841.037796012832
- *   beta_2 = 3613.7956588487104
- *   B_3 = -807.6169115569801
- *   C_3 = 699.0660215164271
- *   alpha_3 = 2696.61584577057
- *   beta_3 = 11305.978122068238
+ *   G_inf = 0.7514687110840581
+ *   B_1 = -86.83742740820311
+ *   C_1 = -113.19381850326326
+ *   alpha_1 = 564.5227789250928
+ *   beta_1 = 3365.757864106523
+ *   B_2 = 1360.5232260093214
+ *   C_2 = -8077.387302861176
+ *   alpha_2 = 6508.254485768598
+ *   beta_2 = 3756.793609657376
+ *   B_3 = -769.4493042350526
+ *   C_3 = 733.536233806052
+ *   alpha_3 = 2728.121578935305
+ *   beta_3 = 11266.559038598283
  *
  * Discretisation (method "matched exponential, refitted numerators", ADMITGEN_RT_METHOD_MATCHED_EXP):
  *   every pole keeps its exact image z = e^{-aT} (as PLRC; L-stable); residues, direct term and a short FIR
@@ -70,26 +70,26 @@
 #define WALL_48000_Q31_HAS_FS_48000 1
 
 /* ---- fs = 48000 Hz ------------------------------------------------------------------------------------
- * refit: max |H - G|/|G| at the data frequencies = 9.87e-06 (plain PLRC coefficients: 0.000864)
+ * refit: max |H - G|/|G| at the data frequencies = 6.12e-06 (plain PLRC coefficients: 0.000819)
  * passivity of H: Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive
  * terms: 2 FIR taps, 0 real poles, 3 pairs; folded into the FIR path: none
- * L1 norm of the emitted impulse response 1.81138; tail to -120 dB: 1159 samples
+ * L1 norm of the emitted impulse response 1.81573; tail to -120 dB: 1177 samples
  * output scaling: y_q31 = y * 2^-1; output table exponent y_exp = 3, acc_shift = 29
- * zero input after any excitation decays to exactly 0 within 1831 samples
+ * zero input after any excitation decays to exactly 0 within 1860 samples
  */
 static const int32_t wall_48000_q31_48000_fir[2] = {
-  191200549, /* d_0 */
-  915403, /* d_1 */
+  197808256, /* d_0 */
+  557333, /* d_1 */
 };
 static const int32_t wall_48000_q31_48000_real[1] = {
   0 /* padding: C has no empty arrays */
 };
 static const int32_t wall_48000_q31_48000_pair[18] = {
-  -245619737, -1186810522, 204082794, 3, -86332895, 107127344, /* alpha = 573.615, beta = 3358.51 1/s (534.524 Hz), alpha T = 0.01195 */
-  -581056138, -280140247, 570505637, 1, 144141088, 788003915, /* alpha = 6841.04, beta = 3613.8 1/s (575.153 Hz), alpha T = 0.1425 */
-  -346749628, -947556499, 234636512, 1, -165358582, -143098751, /* alpha = 2696.62, beta = 11306 1/s (1799.4 Hz), alpha T = 0.05618 */
+  -242591218, -1189591481, 200867070, 3, -83069144, 108283845, /* alpha = 564.523, beta = 3365.76 1/s (535.677 Hz), alpha T = 0.01176 */
+  -556075155, -293229111, 544594280, 1, 119976701, 712501259, /* alpha = 6508.25, beta = 3756.79 1/s (597.912 Hz), alpha T = 0.1356 */
+  -348563945, -943694166, 237300715, 1, -155771077, -148479347, /* alpha = 2728.12, beta = 11266.6 1/s (1793.13 Hz), alpha T = 0.05684 */
 };
-#define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 1831
+#define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 1860
 #define WALL_48000_Q31_48000_OUT_SHIFT 1
 static const admitgen_rt_model_q31 wall_48000_q31_48000 = {
   ADMITGEN_RT_FIELD(abi_version) 1u,
@@ -117,33 +117,33 @@ static inline const admitgen_rt_model_q31 *wall_48000_q31_model(int32_t fs_hz) {
 #define WALL_48000_Q31_Q 0
 #define WALL_48000_Q31_S 3
 static const double wall_48000_q31_theta[13] = {
-  0.7350118615306744, /* G_inf */
-  -91.69483830212607, /* B_1 */
-  -113.77739046284167, /* C_1 */
-  573.6145624519456, /* alpha_1 */
-  3358.5138357519136, /* beta_1 */
-  1712.5847361127082, /* B_2 */
-  -9358.462166399155, /* C_2 */
-  6841.037796012832, /* alpha_2 */
-  3613.7956588487104, /* beta_2 */
-  -807.6169115569801, /* B_3 */
-  699.0660215164271, /* C_3 */
-  2696.61584577057, /* alpha_3 */
-  11305.978122068238 /* beta_3 */
+  0.7514687110840581, /* G_inf */
+  -86.83742740820311, /* B_1 */
+  -113.19381850326326, /* C_1 */
+  564.5227789250928, /* alpha_1 */
+  3365.757864106523, /* beta_1 */
+  1360.5232260093214, /* B_2 */
+  -8077.387302861176, /* C_2 */
+  6508.254485768598, /* alpha_2 */
+  3756.793609657376, /* beta_2 */
+  -769.4493042350526, /* B_3 */
+  733.536233806052, /* C_3 */
+  2728.121578935305, /* alpha_3 */
+  11266.559038598283 /* beta_3 */
 };
 static const double wall_48000_q31_48000_ref_fir[2] = {
-  0.7122775510165947,
-  0.0034101401244341334,
+  0.7368931785194827,
+  0.002076226374283013,
 };
 static const double wall_48000_q31_48000_ref_real[1] = {
   0.0
 };
 static const double wall_48000_q31_48000_ref_pair[15] = {
-  -0.014296950374738883, -0.06908146445419565, 0.011879182097818427, -0.32161509782446057, 0.3990804570665777,
-  -0.1352876746306316, -0.06522523401230744, 0.1328311947506064, 0.5369673979379351, 2.935543340881975,
-  -0.0807339389890102, -0.2206201895436761, 0.054630570115074856, -0.616008720067926, -0.5330843872436015,
+  -0.014120667338355923, -0.06924333755564785, 0.011692002276004013, -0.30945667612704786, 0.4033887575957428,
+  -0.1294713361962848, -0.06827272276223083, 0.12679823684485708, 0.44694804006107325, 2.654274028507284,
+  -0.0811563677301235, -0.21972092009537006, 0.055250878121362826, -0.5802924836890239, -0.553128670662993,
 };
-#define WALL_48000_Q31_48000_REF_H0 0.7461301401411822
+#define WALL_48000_Q31_48000_REF_H0 0.7578855645078441
 #endif
 
 /* Band absorption from the continuous model, for engines that take material absorption instead of a filter:
@@ -151,54 +151,54 @@ static const double wall_48000_q31_48000_ref_pair[15] = {
  * mean over the band (IEC 61260 base-10 bands). */
 #define WALL_48000_Q31_N_OCTAVE 10
 static const float wall_48000_q31_octave[10][3] = {
-  { 31.622776f, 0.030375144f, 0.055431996f }, /* 22-45 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.045626137f, 0.07809173f }, /* 45-89 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.10064945f, 0.15196629f }, /* 89-178 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.25260988f, 0.31701913f }, /* 178-355 Hz, outside the data: model extrapolation */
-  { 501.18723f, 0.52760446f, 0.5168131f }, /* 355-708 Hz */
-  { 1000.0f, 0.9379936f, 0.84377384f }, /* 708-1413 Hz */
-  { 1995.2623f, 0.98600936f, 0.93292296f }, /* 1413-2818 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.98925865f, 0.93828064f }, /* 2818-5623 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.98178834f, 0.94420403f }, /* 5623-11220 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.9781094f, 0.9462709f }, /* 11220-22387 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.03759257f, 0.06820096f }, /* 22-45 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.05222854f, 0.08914288f }, /* 45-89 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.1052244f, 0.15890847f }, /* 89-178 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.25323525f, 0.31808853f }, /* 178-355 Hz, outside the data: model extrapolation */
+  { 501.18723f, 0.52780885f, 0.5170077f }, /* 355-708 Hz */
+  { 1000.0f, 0.93789744f, 0.84366274f }, /* 708-1413 Hz */
+  { 1995.2623f, 0.98540294f, 0.9333092f }, /* 1413-2818 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.9891681f, 0.93820983f }, /* 2818-5623 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.9837828f, 0.94326836f }, /* 5623-11220 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.98096514f, 0.94499177f }, /* 11220-22387 Hz, outside the data: model extrapolation */
 };
 #define WALL_48000_Q31_N_THIRD_OCTAVE 30
 static const float wall_48000_q31_third_octave[30][3] = {
-  { 25.118864f, 0.0282228f, 0.05220365f }, /* 22-28 Hz, outside the data: model extrapolation */
-  { 31.622776f, 0.030028587f, 0.054900397f }, /* 28-35 Hz, outside the data: model extrapolation */
-  { 39.81072f, 0.03287511f, 0.059193566f }, /* 35-45 Hz, outside the data: model extrapolation */
-  { 50.118725f, 0.037348066f, 0.06593063f }, /* 45-56 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.04434192f, 0.07632376f }, /* 56-71 Hz, outside the data: model extrapolation */
-  { 79.43282f, 0.055192333f, 0.0920261f }, /* 71-89 Hz, outside the data: model extrapolation */
-  { 100.0f, 0.071821034f, 0.11513576f }, /* 89-112 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.09682313f, 0.14801638f }, /* 112-141 Hz, outside the data: model extrapolation */
-  { 158.48932f, 0.13331537f, 0.192758f }, /* 141-178 Hz, outside the data: model extrapolation */
-  { 199.52623f, 0.18416578f, 0.250051f }, /* 178-224 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.2499031f, 0.31716084f }, /* 224-282 Hz, outside the data: model extrapolation */
-  { 316.22775f, 0.32376406f, 0.38384068f }, /* 282-355 Hz */
-  { 398.10718f, 0.37936014f, 0.42001998f }, /* 355-447 Hz */
-  { 501.18723f, 0.45233405f, 0.44511715f }, /* 447-562 Hz */
-  { 630.95734f, 0.7511348f, 0.6853189f }, /* 562-708 Hz */
-  { 794.32825f, 0.88205916f, 0.7981266f }, /* 708-891 Hz */
-  { 1000.0f, 0.9461871f, 0.8488705f }, /* 891-1122 Hz */
-  { 1258.9254f, 0.9857037f, 0.8843045f }, /* 1122-1413 Hz */
-  { 1584.8932f, 0.99659723f, 0.91857755f }, /* 1413-1778 Hz */
-  { 1995.2623f, 0.9761894f, 0.9445459f }, /* 1778-2239 Hz, outside the data: model extrapolation */
-  { 2511.8865f, 0.98523855f, 0.93563527f }, /* 2239-2818 Hz, outside the data: model extrapolation */
-  { 3162.2776f, 0.9910759f, 0.9355054f }, /* 2818-3548 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.98986435f, 0.9383554f }, /* 3548-4467 Hz, outside the data: model extrapolation */
-  { 5011.8726f, 0.98683316f, 0.94098157f }, /* 4467-5623 Hz, outside the data: model extrapolation */
-  { 6309.573f, 0.983889f, 0.9429624f }, /* 5623-7079 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.98157f, 0.94435424f }, /* 7079-8913 Hz, outside the data: model extrapolation */
-  { 10000.0f, 0.9799066f, 0.9452951f }, /* 8913-11220 Hz, outside the data: model extrapolation */
-  { 12589.254f, 0.9787725f, 0.9459158f }, /* 11220-14125 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.9780219f, 0.94631886f }, /* 14125-17783 Hz, outside the data: model extrapolation */
-  { 19952.623f, 0.977534f, 0.94657785f }, /* 17783-22387 Hz, outside the data: model extrapolation */
+  { 25.118864f, 0.035528827f, 0.06527106f }, /* 22-28 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.03726012f, 0.067708485f }, /* 28-35 Hz, outside the data: model extrapolation */
+  { 39.81072f, 0.03998979f, 0.071624845f }, /* 35-45 Hz, outside the data: model extrapolation */
+  { 50.118725f, 0.044280574f, 0.077824436f }, /* 45-56 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.050993126f, 0.087466165f }, /* 56-71 Hz, outside the data: model extrapolation */
+  { 79.43282f, 0.06141568f, 0.10214307f }, /* 71-89 Hz, outside the data: model extrapolation */
+  { 100.0f, 0.07740904f, 0.12389735f }, /* 89-112 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.10150274f, 0.15506446f }, /* 112-141 Hz, outside the data: model extrapolation */
+  { 158.48932f, 0.13677232f, 0.19777457f }, /* 141-178 Hz, outside the data: model extrapolation */
+  { 199.52623f, 0.18613212f, 0.25288f }, /* 178-224 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.25034875f, 0.31798157f }, /* 224-282 Hz, outside the data: model extrapolation */
+  { 316.22775f, 0.3232288f, 0.38339993f }, /* 282-355 Hz */
+  { 398.10718f, 0.37940797f, 0.42003536f }, /* 355-447 Hz */
+  { 501.18723f, 0.45244718f, 0.44526047f }, /* 447-562 Hz */
+  { 630.95734f, 0.7515866f, 0.6857436f }, /* 562-708 Hz */
+  { 794.32825f, 0.88185817f, 0.7979779f }, /* 708-891 Hz */
+  { 1000.0f, 0.9460809f, 0.8486789f }, /* 891-1122 Hz */
+  { 1258.9254f, 0.98572266f, 0.88431185f }, /* 1122-1413 Hz */
+  { 1584.8932f, 0.99660426f, 0.91864175f }, /* 1413-1778 Hz */
+  { 1995.2623f, 0.975792f, 0.9448591f }, /* 1778-2239 Hz, outside the data: model extrapolation */
+  { 2511.8865f, 0.98380977f, 0.93641645f }, /* 2239-2818 Hz, outside the data: model extrapolation */
+  { 3162.2776f, 0.9901172f, 0.9358381f }, /* 2818-3548 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.9897758f, 0.93826216f }, /* 3548-4467 Hz, outside the data: model extrapolation */
+  { 5011.8726f, 0.9876088f, 0.94052964f }, /* 4467-5623 Hz, outside the data: model extrapolation */
+  { 6309.573f, 0.98538834f, 0.9422227f }, /* 5623-7079 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.9836175f, 0.9433978f }, /* 7079-8913 Hz, outside the data: model extrapolation */
+  { 10000.0f, 0.9823431f, 0.94418406f }, /* 8913-11220 Hz, outside the data: model extrapolation */
+  { 12589.254f, 0.98147357f, 0.9446989f }, /* 11220-14125 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9808981f, 0.9450316f }, /* 14125-17783 Hz, outside the data: model extrapolation */
+  { 19952.623f, 0.98052406f, 0.9452446f }, /* 17783-22387 Hz, outside the data: model extrapolation */
 };
 
 /* Machine-readable description of exactly the coefficients above (schema admitgen.emit/1), read by
  * admitgen check:
-admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q31","format":"q31","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7350118615306744,-91.69483830212607,-113.77739046284167,573.6145624519456,3358.5138357519136,1712.5847361127082,-9358.462166399155,6841.037796012832,3613.7956588487104,-807.6169115569801,699.0660215164271,2696.61584577057,11305.978122068238]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":9.874795924517502e-06,"plrc_max_rel_error":0.0008641256409277775,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.7122775510165947,0.0034101401244341334],"real":[],"pair":[[-0.014296950374738883,-0.06908146445419565,0.011879182097818427,-0.32161509782446057,0.3990804570665777],[-0.1352876746306316,-0.06522523401230744,0.1328311947506064,0.5369673979379351,2.935543340881975],[-0.0807339389890102,-0.2206201895436761,0.054630570115074856,-0.616008720067926,-0.5330843872436015]]},"q31":{"bits":31,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.8113808997618657,"zero_decay_bound":1831,"fir":[191200549,915403],"real":[],"pair":[[-245619737,-1186810522,204082794,3,-86332895,107127344],[-581056138,-280140247,570505637,1,144141088,788003915],[-346749628,-947556499,234636512,1,-165358582,-143098751]]}}]} admitgen:end
+admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q31","format":"q31","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7514687110840581,-86.83742740820311,-113.19381850326326,564.5227789250928,3365.757864106523,1360.5232260093214,-8077.387302861176,6508.254485768598,3756.793609657376,-769.4493042350526,733.536233806052,2728.121578935305,11266.559038598283]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":6.1170230431698164e-06,"plrc_max_rel_error":0.0008187756607046758,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.7368931785194827,0.002076226374283013],"real":[],"pair":[[-0.014120667338355923,-0.06924333755564785,0.011692002276004013,-0.30945667612704786,0.4033887575957428],[-0.1294713361962848,-0.06827272276223083,0.12679823684485708,0.44694804006107325,2.654274028507284],[-0.0811563677301235,-0.21972092009537006,0.055250878121362826,-0.5802924836890239,-0.553128670662993]]},"q31":{"bits":31,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.815728813186882,"zero_decay_bound":1860,"fir":[197808256,557333],"real":[],"pair":[[-242591218,-1189591481,200867070,3,-83069144,108283845],[-556075155,-293229111,544594280,1,119976701,712501259],[-348563945,-943694166,237300715,1,-155771077,-148479347]]}}]} admitgen:end
  */
 
 #endif /* WALL_48000_Q31_H */
