@@ -12,11 +12,12 @@
 ///  5. with --order QxSy (and optionally --live N, --sampler full|poles, --basotect for the quick-start
 ///     file): that order alone, no other section: calls, seconds, ns per call, the sampler used and
 ///     any fallback (for profiling one order).
+///  5-6 take --slices K (slices per replacement; default the sampler's rule) and --dlogz X (default automatic).
 ///  6. with --order QxSy --seeds N: that order on seeds S … S + N − 1 (two at a time), then the spread of ln Z
 ///     over the seeds against the mean reported error, and the mean calls: what a change of the sampler must be
 ///     judged by (one seed's calls and ln Z scatter more than most changes move them; docs/validation.md, "Speed").
 /// Usage: bench_fit [DATA.csv] [--quick] [--basotect] [--order QxSy [--live N] [--sampler KIND] [--seed S]
-///  [--seeds N]]  (--quick skips the 1-thread grid)
+///  [--seeds N] [--slices K] [--dlogz X]]  (--quick skips the 1-thread grid)
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
@@ -134,8 +135,10 @@ double grid(const Measurement& data, int threads, bool print_models, SamplerKind
 }
 
 /// One order alone with one sampler (section 5 of the file comment).
-void single_order(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed) {
+void single_order(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed,
+                  const NestedSettings& given) {
   FitSettings s;
+  s.sampler = given;
   s.sampler_kind = kind;
   s.sampler.live = live;
   s.sampler.seed = seed;
@@ -153,8 +156,9 @@ void single_order(const Measurement& data, const Order& order, SamplerKind kind,
 
 /// One order over `seeds` seeds (section 6 of the file comment).
 void seed_spread(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed,
-                 int seeds) {
+                 int seeds, const NestedSettings& given) {
   FitSettings s;
+  s.sampler = given;
   s.sampler_kind = kind;
   s.sampler.live = live;
   std::vector<ModelResult> runs;
@@ -197,6 +201,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   int seeds = 0;
   SamplerKind single_kind = SamplerKind::poles;
+  NestedSettings chosen;  // --slices and --dlogz of sections 5-6
   for (int i = 1; i < argc; ++i) {
     const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
@@ -206,6 +211,8 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--seed") == 0 && has_value) seed = std::stoull(argv[++i]);
     else if (std::strcmp(argv[i], "--seeds") == 0 && has_value) seeds = std::stoi(argv[++i]);
     else if (std::strcmp(argv[i], "--sampler") == 0 && has_value) single_kind = parse_sampler_kind(argv[++i]);
+    else if (std::strcmp(argv[i], "--slices") == 0 && has_value) chosen.slices = std::stoi(argv[++i]);
+    else if (std::strcmp(argv[i], "--dlogz") == 0 && has_value) chosen.dlogz = std::stod(argv[++i]);
     else path = argv[i];
   }
   const std::string quick_start = std::string(ADMITGEN_SAMPLES) + "/basotect_tuberlin/round_10cm.csv";
@@ -213,8 +220,8 @@ int main(int argc, char** argv) {
   foam_options.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
   if (!order_name.empty()) {
     const Measurement data = basotect ? read_measurement(quick_start, foam_options) : read_measurement(path, ReadOptions{});
-    if (seeds > 0) seed_spread(data, Order::parse(order_name), single_kind, live, seed, seeds);
-    else single_order(data, Order::parse(order_name), single_kind, live, seed);
+    if (seeds > 0) seed_spread(data, Order::parse(order_name), single_kind, live, seed, seeds, chosen);
+    else single_order(data, Order::parse(order_name), single_kind, live, seed, chosen);
     return 0;
   }
   const Measurement data = read_measurement(path, ReadOptions{});

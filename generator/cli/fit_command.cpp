@@ -127,7 +127,7 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
       ->check(CLI::Range(1e-6, 10.0));
   sub->add_option("--max-iterations", s.sampler.max_iterations, "Iteration cap per order (safety net)")
       ->check(CLI::Range(1L, 100'000'000L))->capture_default_str();
-  sub->add_option("--slices", s.sampler.slices, "Slice moves per replacement (0 = automatic: 1 + dim/2 for the pole sampler, 3 + dim for the full sampler)")->check(CLI::Range(0, 1000))->capture_default_str();
+  sub->add_option("--slices", s.sampler.slices, "Slice moves per replacement (0 = 3 + dim)")->check(CLI::Range(0, 1000))->capture_default_str();
   sub->add_option("--grid-growth", s.grid_growth,
                   "When the selected order lies on the edge of the grid (Q = --qmax or S = --smax), add up to this many "
                   "real poles and as many pairs, one row or column at a time, while the data select them and the "

@@ -116,7 +116,7 @@ class Compression {
 /// contour), so the choice sets the cost. The ellipsoid serves while its likelihood calls per replacement
 /// since the last covariance update stay below a slice chain's running mean (EllipsoidProposal::pays); a
 /// replacement for which it finds nothing within a slice chain's mean calls moves by slices instead, and those
-/// calls are charged to it. Where the contour is nearly ellipsoidal one or two calls replace a slice chain;
+/// calls are charged to it. Where the contour is nearly ellipsoidal one or two calls replace 3 + dim slices;
 /// where it is far from it, slices serve (docs/method.md, "Sampler and evidence error").
 class Replacement {
  public:
@@ -160,22 +160,6 @@ class Replacement {
 };
 
 }  // namespace
-
-int slice_count(SliceRule rule, int dim) {
-  switch (rule) {
-    case SliceRule::three_plus_dim: return 3 + dim;
-    case SliceRule::one_plus_half_dim: return 1 + dim / 2;
-  }
-  return 3 + dim;
-}
-
-const char* describe(SliceRule rule) {
-  switch (rule) {
-    case SliceRule::three_plus_dim: return "3 + dim";
-    case SliceRule::one_plus_half_dim: return "1 + dim/2";
-  }
-  return "3 + dim";
-}
 
 double automatic_dlogz(int live) { return 0.01 + 0.001 * (live - 1); }
 

@@ -20,17 +20,6 @@
 
 namespace admitgen {
 
-/// How many 1-D slices a replacement makes when NestedSettings::slices is 0 (docs/method.md, "Sampler and
-/// evidence error").
-enum class SliceRule {
-  three_plus_dim,     ///< 3 + dim, as dynesty's rslice (Speagle 2020): the full sampler
-  one_plus_half_dim,  ///< 1 + ⌊dim/2⌋: the pole sampler, whose ln Z and its scatter over seeds it leaves unchanged
-};
-/// The number of slices `rule` gives in `dim` dimensions.
-int slice_count(SliceRule rule, int dim);
-/// The rule as fit.json and the report write it: "3 + dim" or "1 + dim/2".
-const char* describe(SliceRule rule);
-
 /// The stop dynesty uses by default when the live points close the run (Speagle 2020): 0.01 + 0.001 (n − 1).
 /// The live points then hold at most e^{dlogz} − 1 of the evidence found so far, which the close adds with
 /// their mean likelihood; a lower stop adds iterations of live points that change ln Z by less than its error.
@@ -41,8 +30,7 @@ struct NestedSettings {
   /// Stop when ln(Z + X·L_max) − ln Z < dlogz; unset: automatic_dlogz(live) (stop_dlogz()).
   std::optional<double> dlogz;
   long max_iterations = 1'000'000;     ///< safety cap on deaths
-  int slices = 0;                      ///< 1-D slices per replacement; 0 = automatic (slice_rule)
-  SliceRule slice_rule = SliceRule::three_plus_dim;
+  int slices = 0;                      ///< 1-D slices per replacement; 0 = automatic (3 + dim)
   std::uint64_t seed = 1;
   int covariance_interval = 0;         ///< iterations between covariance updates; 0 = live/10
   /// Constrained step by uniform draws in the live points' bounding ellipsoid (inference/ellipsoid_union.hpp),
@@ -55,8 +43,9 @@ struct NestedSettings {
 
   /// The stop in force: dlogz, or automatic_dlogz(live) when unset.
   double stop_dlogz() const { return dlogz ? *dlogz : automatic_dlogz(live); }
-  /// The slices per replacement in force in `dim` dimensions: slices, or slice_rule's count when 0.
-  int slices_per_replacement(int dim) const { return slices > 0 ? slices : slice_count(slice_rule, dim); }
+  /// The slices per replacement in force in `dim` dimensions: slices, or 3 + dim (as dynesty's rslice,
+  /// Speagle 2020) when 0.
+  int slices_per_replacement(int dim) const { return slices > 0 ? slices : 3 + dim; }
 };
 
 /// Status of a run after a death: for progress display and early stops.

@@ -52,7 +52,6 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
   // at a fraction of the calls (inference/ellipsoid_union.hpp).
   NestedSettings pole_settings = settings;
   pole_settings.ellipsoid_draws = true;
-  pole_settings.slice_rule = kPoleSliceRule;
   const NestedRun poles = dim == 0 ? analytic_run(evidence, settings.live)
                                    : run_nested_sampling(pole_model(order, transform, evidence), pole_settings, progress);
 

@@ -26,12 +26,6 @@ NestedRun run_poles_sampler(const Measurement& data, const Order& order, const P
                             bool reduce_symmetry, DataCount count, const NestedSettings& settings,
                             std::uint64_t draw_seed, const NestedProgressFn& progress = {});
 
-/// The pole sampler's slices per replacement when NestedSettings::slices is 0. Fewer than the full sampler's
-/// 3 + dim: over 16-24 seeds of Q1S2, Q2S2 and Q3S3 on the reference file, 1 + dim/2 slices gave the same mean
-/// ln Z and the same scatter at 40-45 % of the calls (docs/validation.md, "Speed"); the spread between seeds
-/// there comes from the live points' split between modes, which no number of slices within a mode changes.
-constexpr SliceRule kPoleSliceRule = SliceRule::one_plus_half_dim;
-
 /// Points of a run whose posterior share is below this over the number of points keep their least-squares
 /// residues instead of a draw from the conditional (together at most this share of the posterior).
 constexpr double kNegligibleShare = 1e-6;

@@ -3,7 +3,6 @@
 
 #include "core/bounded_read.hpp"
 #include "core/errors.hpp"
-#include "inference/nested_sampler.hpp"
 #include "io/record_fields.hpp"
 #include "model/order.hpp"
 
@@ -28,20 +27,15 @@ struct OrderName {
   }
 };
 
-/// The number of slices, or when automatic (empty) the rule that set it, "3 + dim" or "1 + dim/2"
-/// (inference/nested_sampler.hpp, SliceRule), held in `rule`.
+/// The number of slices, or "3 + dim" when automatic (empty).
 struct Slices {
-  std::string& rule;
-  Json write(const std::optional<std::int64_t>& slices) const { return slices ? Json(*slices) : Json(rule); }
+  Json write(const std::optional<std::int64_t>& slices) const { return slices ? Json(*slices) : Json("3 + dim"); }
   void read(const Field& f, std::optional<std::int64_t>& slices) const {
     slices.reset();
     if (!f.json().is_string()) {
       slices = f.integer();
-    } else if (f.text() == describe(SliceRule::three_plus_dim) || f.text() == describe(SliceRule::one_plus_half_dim)) {
-      rule = f.text();
-    } else {
-      f.fail(fmt::format("expected a number of slices, \"{}\" or \"{}\"", describe(SliceRule::three_plus_dim),
-                         describe(SliceRule::one_plus_half_dim)));
+    } else if (f.text() != "3 + dim") {
+      f.fail("expected a number of slices or \"3 + dim\"");
     }
   }
 };
@@ -91,7 +85,7 @@ void fields(V& v, FitSamplerSettings& s) {
   v("dlogz", s.dlogz);
   v("max_iterations", s.max_iterations);
   v("missed_mode_retries", s.missed_mode_retries);
-  v.custom("slices", s.slices, Slices{s.slices_rule});
+  v.custom("slices", s.slices, Slices{});
   v("residues", s.residues);
   v.ignored("truncation_tolerance_nats");  // written by versions with the residue box's correction
 }

@@ -42,8 +42,7 @@ struct FitSamplerSettings {
   double dlogz = 0.0;
   std::int64_t max_iterations = 0;
   std::optional<std::int64_t> missed_mode_retries;  ///< absent in older fits
-  std::optional<std::int64_t> slices;               ///< empty: automatic, by slices_rule
-  std::string slices_rule = "3 + dim";              ///< the automatic rule ("3 + dim" or "1 + dim/2")
+  std::optional<std::int64_t> slices;               ///< empty: automatic ("3 + dim")
   std::optional<std::string> residues;              ///< absent in older fits
 };
 

@@ -200,7 +200,7 @@ std::string provenance(const FitRecord& fit) {
                                    escape_xml(fmt::format("{}", fmt::join(fit.grid->steps, "; "))))},
       {"sampler", fmt::format("{}; {} live points, seed {}, Δln Z {} , slices {}", escape_xml(s.sampler.method), s.live,
                               s.seed, escape_xml(json_number(s.sampler.dlogz)),
-                              s.sampler.slices ? std::to_string(*s.sampler.slices) : s.sampler.slices_rule)},
+                              s.sampler.slices ? std::to_string(*s.sampler.slices) : std::string("3 + dim"))},
       {"priors", fmt::format("{}{}", escape_xml(s.priors_source), s.symmetry_reduced ? ", symmetry-reduced" : "")},
       {"likelihood", escape_xml(s.likelihood)},
       {"selection", escape_xml(s.select)},

@@ -3,7 +3,6 @@
 
 #include "core/errors.hpp"
 #include "inference/pole_space.hpp"
-#include "inference/poles_sampler.hpp"
 #include "inference/residue_evidence.hpp"
 #include "selection/grid_growth.hpp"
 
@@ -69,9 +68,7 @@ std::string duration(double seconds) {
 double expected_evaluations(const Order& order, const FitSettings& settings, int live) {
   const bool poles = order_sampler(settings) == SamplerKind::poles;
   const double dim = poles ? pole_count(order) : order.dim();
-  NestedSettings sampler = settings.sampler;
-  if (poles) sampler.slice_rule = kPoleSliceRule;
-  const double slices = sampler.slices_per_replacement(static_cast<int>(dim));
+  const double slices = settings.sampler.slices_per_replacement(static_cast<int>(dim));
   return (poles ? kPoleEvaluationsPerLiveDimSlice : kEvaluationsPerLiveDimSlice) * live * dim * slices;
 }
 

@@ -3,7 +3,6 @@
 
 #include "core/version.hpp"
 #include "inference/evidence.hpp"
-#include "inference/poles_sampler.hpp"
 #include "selection/goodness_of_fit.hpp"
 #include "selection/prior_edge.hpp"
 
@@ -62,7 +61,6 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.sampler.max_iterations = s.sampler.max_iterations;
   r.sampler.missed_mode_retries = s.missed_mode_retries;
   if (s.sampler.slices > 0) r.sampler.slices = s.sampler.slices;
-  r.sampler.slices_rule = describe(order_sampler(s) == SamplerKind::poles ? kPoleSliceRule : s.sampler.slice_rule);
   r.sampler.residues = order_sampler(s) == SamplerKind::poles
                            ? "integrated exactly with the noise (poles sampled; residues and noise drawn from their "
                              "conditional)"

@@ -22,8 +22,8 @@
 ///     together at most the first round's or kMinGrowthBudgetPasses, whichever is larger (so growth at most
 ///     doubles a fit that is not already short). An added order is estimated at c·(D/d)² calls from the largest
 ///     fitted order (c calls, dimension d), each call N·(1 + Q + S) passes: a run's iterations grow with its
-///     information H, roughly ∝ dimension, and its calls per iteration with its slices per replacement,
-///     3 + dimension (docs/method.md, "Growing the grid").
+///     information H, roughly ∝ dimension, and its calls per iteration with its slices per replacement, which
+///     grow with the dimension (docs/method.md, "Growing the grid").
 #pragma once
 
 #include "model/order.hpp"

@@ -7,19 +7,19 @@
  *
  * Continuous model (time dependence e^{+jwt}; G = rho c v_n / p normalised admittance, v_n into the wall):
  *   G(s) = G_inf + sum_q A_q/(lambda_q + s) + sum_s [(B_s + jC_s)/(alpha_s + j beta_s + s) + (B_s - jC_s)/(alpha_s - j beta_s + s)]
- *   G_inf = 0.7514687110840581
- *   B_1 = -86.83742740820311
- *   C_1 = -113.19381850326326
- *   alpha_1 = 564.5227789250928
- *   beta_1 = 3365.757864106523
- *   B_2 = 1360.5232260093214
- *   C_2 = -8077.387302861176
- *   alpha_2 = 6508.254485768598
- *   beta_2 = 3756.793609657376
- *   B_3 = -769.4493042350526
- *   C_3 = 733.536233806052
- *   alpha_3 = 2728.121578935305
- *   beta_3 = 11266.559038598283
+ *   G_inf = 0.7222675182878371
+ *   B_1 = -92.39402827183606
+ *   C_1 = -112.9085672032996
+ *   alpha_1 = 573.3054273516161
+ *   beta_1 = 3355.2612893720034
+ *   B_2 = 1805.8400853577023
+ *   C_2 = -9270.479701451653
+ *   alpha_2 = 6804.026943182046
+ *   beta_2 = 3631.0466165816397
+ *   B_3 = -749.1229920372951
+ *   C_3 = 625.3794088576982
+ *   alpha_3 = 2570.311504814294
+ *   beta_3 = 11280.60527982123
  *
  * Discretisation (method "matched exponential, refitted numerators", ADMITGEN_RT_METHOD_MATCHED_EXP):
  *   every pole keeps its exact image z = e^{-aT} (as PLRC; L-stable); residues, direct term and a short FIR
@@ -70,32 +70,33 @@
 #define WALL_48000_Q31_HAS_FS_48000 1
 
 /* ---- fs = 48000 Hz ------------------------------------------------------------------------------------
- * refit: max |H - G|/|G| at the data frequencies = 6.12e-06 (plain PLRC coefficients: 0.000819)
+ * refit: max |H - G|/|G| at the data frequencies = 1.1e-06 (plain PLRC coefficients: 0.000903)
  * passivity of H: Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive
- * terms: 2 FIR taps, 0 real poles, 3 pairs; folded into the FIR path: none
- * L1 norm of the emitted impulse response 1.81573; tail to -120 dB: 1177 samples
+ * terms: 3 FIR taps, 0 real poles, 3 pairs; folded into the FIR path: none
+ * L1 norm of the emitted impulse response 1.80698; tail to -120 dB: 1160 samples
  * output scaling: y_q31 = y * 2^-1; output table exponent y_exp = 3, acc_shift = 29
- * zero input after any excitation decays to exactly 0 within 1860 samples
+ * zero input after any excitation decays to exactly 0 within 1833 samples
  */
-static const int32_t wall_48000_q31_48000_fir[2] = {
-  197808256, /* d_0 */
-  557333, /* d_1 */
+static const int32_t wall_48000_q31_48000_fir[3] = {
+  186383627, /* d_0 */
+  1902990, /* d_1 */
+  -529632, /* d_2 */
 };
 static const int32_t wall_48000_q31_48000_real[1] = {
   0 /* padding: C has no empty arrays */
 };
 static const int32_t wall_48000_q31_48000_pair[18] = {
-  -242591218, -1189591481, 200867070, 3, -83069144, 108283845, /* alpha = 564.523, beta = 3365.76 1/s (535.677 Hz), alpha T = 0.01176 */
-  -556075155, -293229111, 544594280, 1, 119976701, 712501259, /* alpha = 6508.25, beta = 3756.79 1/s (597.912 Hz), alpha T = 0.1356 */
-  -348563945, -943694166, 237300715, 1, -155771077, -148479347, /* alpha = 2728.12, beta = 11266.6 1/s (1793.13 Hz), alpha T = 0.05684 */
+  -245430293, -1185670668, 203973465, 3, -87040189, 106365838, /* alpha = 573.305, beta = 3355.26 1/s (534.006 Hz), alpha T = 0.01194 */
+  -578292386, -281692107, 567632749, 1, 152836850, 784552347, /* alpha = 6804.03, beta = 3631.05 1/s (577.899 Hz), alpha T = 0.1418 */
+  -335845196, -947960463, 223938330, 1, -160701999, -134156609, /* alpha = 2570.31, beta = 11280.6 1/s (1795.36 Hz), alpha T = 0.05355 */
 };
-#define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 1860
+#define WALL_48000_Q31_48000_ZERO_DECAY_SAMPLES 1833
 #define WALL_48000_Q31_48000_OUT_SHIFT 1
 static const admitgen_rt_model_q31 wall_48000_q31_48000 = {
   ADMITGEN_RT_FIELD(abi_version) 1u,
   ADMITGEN_RT_FIELD(fs_hz) 48000,
   ADMITGEN_RT_FIELD(method) ADMITGEN_RT_METHOD_MATCHED_EXP,
-  ADMITGEN_RT_FIELD(n_fir) 2,
+  ADMITGEN_RT_FIELD(n_fir) 3,
   ADMITGEN_RT_FIELD(n_real) 0,
   ADMITGEN_RT_FIELD(n_pair) 3,
   ADMITGEN_RT_FIELD(out_shift) 1,
@@ -117,33 +118,34 @@ static inline const admitgen_rt_model_q31 *wall_48000_q31_model(int32_t fs_hz) {
 #define WALL_48000_Q31_Q 0
 #define WALL_48000_Q31_S 3
 static const double wall_48000_q31_theta[13] = {
-  0.7514687110840581, /* G_inf */
-  -86.83742740820311, /* B_1 */
-  -113.19381850326326, /* C_1 */
-  564.5227789250928, /* alpha_1 */
-  3365.757864106523, /* beta_1 */
-  1360.5232260093214, /* B_2 */
-  -8077.387302861176, /* C_2 */
-  6508.254485768598, /* alpha_2 */
-  3756.793609657376, /* beta_2 */
-  -769.4493042350526, /* B_3 */
-  733.536233806052, /* C_3 */
-  2728.121578935305, /* alpha_3 */
-  11266.559038598283 /* beta_3 */
+  0.7222675182878371, /* G_inf */
+  -92.39402827183606, /* B_1 */
+  -112.9085672032996, /* C_1 */
+  573.3054273516161, /* alpha_1 */
+  3355.2612893720034, /* beta_1 */
+  1805.8400853577023, /* B_2 */
+  -9270.479701451653, /* C_2 */
+  6804.026943182046, /* alpha_2 */
+  3631.0466165816397, /* beta_2 */
+  -749.1229920372951, /* B_3 */
+  625.3794088576982, /* C_3 */
+  2570.311504814294, /* alpha_3 */
+  11280.60527982123 /* beta_3 */
 };
-static const double wall_48000_q31_48000_ref_fir[2] = {
-  0.7368931785194827,
-  0.002076226374283013,
+static const double wall_48000_q31_48000_ref_fir[3] = {
+  0.6943331182412201,
+  0.007089190186444835,
+  -0.001973034398871744,
 };
 static const double wall_48000_q31_48000_ref_real[1] = {
   0.0
 };
 static const double wall_48000_q31_48000_ref_pair[15] = {
-  -0.014120667338355923, -0.06924333755564785, 0.011692002276004013, -0.30945667612704786, 0.4033887575957428,
-  -0.1294713361962848, -0.06827272276223083, 0.12679823684485708, 0.44694804006107325, 2.654274028507284,
-  -0.0811563677301235, -0.21972092009537006, 0.055250878121362826, -0.5802924836890239, -0.553128670662993,
+  -0.014285923293849334, -0.06901511617149177, 0.011872818268405503, -0.324249973484718, 0.39624362319185336,
+  -0.13464418850803467, -0.06558655467861539, 0.13216229821611875, 0.5693616334745178, 2.9226852456975765,
+  -0.07819505323671969, -0.22071424477414422, 0.052139705587645746, -0.5986615973907399, -0.4997723130074523,
 };
-#define WALL_48000_Q31_48000_REF_H0 0.7578855645078441
+#define WALL_48000_Q31_48000_REF_H0 0.7345174597939936
 #endif
 
 /* Band absorption from the continuous model, for engines that take material absorption instead of a filter:
@@ -151,54 +153,54 @@ static const double wall_48000_q31_48000_ref_pair[15] = {
  * mean over the band (IEC 61260 base-10 bands). */
 #define WALL_48000_Q31_N_OCTAVE 10
 static const float wall_48000_q31_octave[10][3] = {
-  { 31.622776f, 0.03759257f, 0.06820096f }, /* 22-45 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.05222854f, 0.08914288f }, /* 45-89 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.1052244f, 0.15890847f }, /* 89-178 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.25323525f, 0.31808853f }, /* 178-355 Hz, outside the data: model extrapolation */
-  { 501.18723f, 0.52780885f, 0.5170077f }, /* 355-708 Hz */
-  { 1000.0f, 0.93789744f, 0.84366274f }, /* 708-1413 Hz */
-  { 1995.2623f, 0.98540294f, 0.9333092f }, /* 1413-2818 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.9891681f, 0.93820983f }, /* 2818-5623 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.9837828f, 0.94326836f }, /* 5623-11220 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.98096514f, 0.94499177f }, /* 11220-22387 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.027619462f, 0.050521612f }, /* 22-45 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.04298382f, 0.07366606f }, /* 45-89 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.09840413f, 0.14863971f }, /* 89-178 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.2513576f, 0.31547266f }, /* 178-355 Hz, outside the data: model extrapolation */
+  { 501.18723f, 0.5271782f, 0.51642585f }, /* 355-708 Hz */
+  { 1000.0f, 0.9380435f, 0.84384704f }, /* 708-1413 Hz */
+  { 1995.2623f, 0.9869832f, 0.9327378f }, /* 1413-2818 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.98854584f, 0.9390137f }, /* 2818-5623 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.9796564f, 0.9451098f }, /* 5623-11220 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.9755742f, 0.94722474f }, /* 11220-22387 Hz, outside the data: model extrapolation */
 };
 #define WALL_48000_Q31_N_THIRD_OCTAVE 30
 static const float wall_48000_q31_third_octave[30][3] = {
-  { 25.118864f, 0.035528827f, 0.06527106f }, /* 22-28 Hz, outside the data: model extrapolation */
-  { 31.622776f, 0.03726012f, 0.067708485f }, /* 28-35 Hz, outside the data: model extrapolation */
-  { 39.81072f, 0.03998979f, 0.071624845f }, /* 35-45 Hz, outside the data: model extrapolation */
-  { 50.118725f, 0.044280574f, 0.077824436f }, /* 45-56 Hz, outside the data: model extrapolation */
-  { 63.095734f, 0.050993126f, 0.087466165f }, /* 56-71 Hz, outside the data: model extrapolation */
-  { 79.43282f, 0.06141568f, 0.10214307f }, /* 71-89 Hz, outside the data: model extrapolation */
-  { 100.0f, 0.07740904f, 0.12389735f }, /* 89-112 Hz, outside the data: model extrapolation */
-  { 125.89254f, 0.10150274f, 0.15506446f }, /* 112-141 Hz, outside the data: model extrapolation */
-  { 158.48932f, 0.13677232f, 0.19777457f }, /* 141-178 Hz, outside the data: model extrapolation */
-  { 199.52623f, 0.18613212f, 0.25288f }, /* 178-224 Hz, outside the data: model extrapolation */
-  { 251.18864f, 0.25034875f, 0.31798157f }, /* 224-282 Hz, outside the data: model extrapolation */
-  { 316.22775f, 0.3232288f, 0.38339993f }, /* 282-355 Hz */
-  { 398.10718f, 0.37940797f, 0.42003536f }, /* 355-447 Hz */
-  { 501.18723f, 0.45244718f, 0.44526047f }, /* 447-562 Hz */
-  { 630.95734f, 0.7515866f, 0.6857436f }, /* 562-708 Hz */
-  { 794.32825f, 0.88185817f, 0.7979779f }, /* 708-891 Hz */
-  { 1000.0f, 0.9460809f, 0.8486789f }, /* 891-1122 Hz */
-  { 1258.9254f, 0.98572266f, 0.88431185f }, /* 1122-1413 Hz */
-  { 1584.8932f, 0.99660426f, 0.91864175f }, /* 1413-1778 Hz */
-  { 1995.2623f, 0.975792f, 0.9448591f }, /* 1778-2239 Hz, outside the data: model extrapolation */
-  { 2511.8865f, 0.98380977f, 0.93641645f }, /* 2239-2818 Hz, outside the data: model extrapolation */
-  { 3162.2776f, 0.9901172f, 0.9358381f }, /* 2818-3548 Hz, outside the data: model extrapolation */
-  { 3981.0718f, 0.9897758f, 0.93826216f }, /* 3548-4467 Hz, outside the data: model extrapolation */
-  { 5011.8726f, 0.9876088f, 0.94052964f }, /* 4467-5623 Hz, outside the data: model extrapolation */
-  { 6309.573f, 0.98538834f, 0.9422227f }, /* 5623-7079 Hz, outside the data: model extrapolation */
-  { 7943.282f, 0.9836175f, 0.9433978f }, /* 7079-8913 Hz, outside the data: model extrapolation */
-  { 10000.0f, 0.9823431f, 0.94418406f }, /* 8913-11220 Hz, outside the data: model extrapolation */
-  { 12589.254f, 0.98147357f, 0.9446989f }, /* 11220-14125 Hz, outside the data: model extrapolation */
-  { 15848.932f, 0.9808981f, 0.9450316f }, /* 14125-17783 Hz, outside the data: model extrapolation */
-  { 19952.623f, 0.98052406f, 0.9452446f }, /* 17783-22387 Hz, outside the data: model extrapolation */
+  { 25.118864f, 0.025451006f, 0.047203638f }, /* 22-28 Hz, outside the data: model extrapolation */
+  { 31.622776f, 0.027270323f, 0.049979348f }, /* 28-35 Hz, outside the data: model extrapolation */
+  { 39.81072f, 0.030138135f, 0.054383513f }, /* 35-45 Hz, outside the data: model extrapolation */
+  { 50.118725f, 0.03464445f, 0.061273895f }, /* 45-56 Hz, outside the data: model extrapolation */
+  { 63.095734f, 0.04169025f, 0.07187515f }, /* 56-71 Hz, outside the data: model extrapolation */
+  { 79.43282f, 0.052620694f, 0.0878545f }, /* 71-89 Hz, outside the data: model extrapolation */
+  { 100.0f, 0.06937078f, 0.11132416f }, /* 89-112 Hz, outside the data: model extrapolation */
+  { 125.89254f, 0.09455245f, 0.14465833f }, /* 112-141 Hz, outside the data: model extrapolation */
+  { 158.48932f, 0.13130042f, 0.189948f }, /* 141-178 Hz, outside the data: model extrapolation */
+  { 199.52623f, 0.18249424f, 0.24786672f }, /* 178-224 Hz, outside the data: model extrapolation */
+  { 251.18864f, 0.2486507f, 0.31563532f }, /* 224-282 Hz, outside the data: model extrapolation */
+  { 316.22775f, 0.32293105f, 0.38291094f }, /* 282-355 Hz */
+  { 398.10718f, 0.3786579f, 0.4193325f }, /* 355-447 Hz */
+  { 501.18723f, 0.45181257f, 0.44461033f }, /* 447-562 Hz */
+  { 630.95734f, 0.75107986f, 0.68535143f }, /* 562-708 Hz */
+  { 794.32825f, 0.882096f, 0.79819816f }, /* 708-891 Hz */
+  { 1000.0f, 0.9462877f, 0.8490168f }, /* 891-1122 Hz */
+  { 1258.9254f, 0.98571575f, 0.8843061f }, /* 1122-1413 Hz */
+  { 1584.8932f, 0.9965916f, 0.9184813f }, /* 1413-1778 Hz */
+  { 1995.2623f, 0.9775048f, 0.9440751f }, /* 1778-2239 Hz, outside the data: model extrapolation */
+  { 2511.8865f, 0.9868496f, 0.9356472f }, /* 2239-2818 Hz, outside the data: model extrapolation */
+  { 3162.2776f, 0.99122393f, 0.9361051f }, /* 2818-3548 Hz, outside the data: model extrapolation */
+  { 3981.0718f, 0.98903847f, 0.93911994f }, /* 3548-4467 Hz, outside the data: model extrapolation */
+  { 5011.8726f, 0.9853728f, 0.9418164f }, /* 4467-5623 Hz, outside the data: model extrapolation */
+  { 6309.573f, 0.98200566f, 0.9438406f }, /* 5623-7079 Hz, outside the data: model extrapolation */
+  { 7943.282f, 0.9794059f, 0.94526297f }, /* 7079-8913 Hz, outside the data: model extrapolation */
+  { 10000.0f, 0.9775583f, 0.94622535f }, /* 8913-11220 Hz, outside the data: model extrapolation */
+  { 12589.254f, 0.9763048f, 0.9468609f }, /* 11220-14125 Hz, outside the data: model extrapolation */
+  { 15848.932f, 0.97547746f, 0.94727385f }, /* 14125-17783 Hz, outside the data: model extrapolation */
+  { 19952.623f, 0.97494054f, 0.9475394f }, /* 17783-22387 Hz, outside the data: model extrapolation */
 };
 
 /* Machine-readable description of exactly the coefficients above (schema admitgen.emit/1), read by
  * admitgen check:
-admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q31","format":"q31","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7514687110840581,-86.83742740820311,-113.19381850326326,564.5227789250928,3365.757864106523,1360.5232260093214,-8077.387302861176,6508.254485768598,3756.793609657376,-769.4493042350526,733.536233806052,2728.121578935305,11266.559038598283]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":6.1170230431698164e-06,"plrc_max_rel_error":0.0008187756607046758,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.7368931785194827,0.002076226374283013],"real":[],"pair":[[-0.014120667338355923,-0.06924333755564785,0.011692002276004013,-0.30945667612704786,0.4033887575957428],[-0.1294713361962848,-0.06827272276223083,0.12679823684485708,0.44694804006107325,2.654274028507284],[-0.0811563677301235,-0.21972092009537006,0.055250878121362826,-0.5802924836890239,-0.553128670662993]]},"q31":{"bits":31,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.815728813186882,"zero_decay_bound":1860,"fir":[197808256,557333],"real":[],"pair":[[-242591218,-1189591481,200867070,3,-83069144,108283845],[-556075155,-293229111,544594280,1,119976701,712501259],[-348563945,-943694166,237300715,1,-155771077,-148479347]]}}]} admitgen:end
+admitgen:model {"schema":"admitgen.emit/1","version":"0.1.0","abi":1,"name":"wall_48000_q31","format":"q31","fit":{"file":"fit.json","version":"0.1.0","input_sha256":"05496acd27bb0466c5a883e5d9dbea9be43b6c9815af1fd5b9dfcafad5c89c7a","seed":11},"order":"Q0S3","estimate":"passive","continuous":{"names":["G_inf","B_1","C_1","alpha_1","beta_1","B_2","C_2","alpha_2","beta_2","B_3","C_3","alpha_3","beta_3"],"theta":[0.7222675182878371,-92.39402827183606,-112.9085672032996,573.3054273516161,3355.2612893720034,1805.8400853577023,-9270.479701451653,6804.026943182046,3631.0466165816397,-749.1229920372951,625.3794088576982,2570.311504814294,11280.60527982123]},"data_f_min_hz":229.6875,"data_f_max_hz":1829.6875,"notes":[],"passivity_enforcement":null,"rates":[{"fs_hz":48000,"method":"matched_exponential_refit","refit_max_rel_error":1.0982557534418158e-06,"plrc_max_rel_error":0.0009031672213593703,"passive_certified":true,"passive_constraint_rounds":0,"folded":[],"double":{"fir":[0.6943331182412201,0.007089190186444835,-0.001973034398871744],"real":[],"pair":[[-0.014285923293849334,-0.06901511617149177,0.011872818268405503,-0.324249973484718,0.39624362319185336],[-0.13464418850803467,-0.06558655467861539,0.13216229821611875,0.5693616334745178,2.9226852456975765],[-0.07819505323671969,-0.22071424477414422,0.052139705587645746,-0.5986615973907399,-0.4997723130074523]]},"q31":{"bits":31,"out_shift":1,"y_exp":3,"acc_shift":29,"l1_norm":1.8069836647381725,"zero_decay_bound":1833,"fir":[186383627,1902990,-529632],"real":[],"pair":[[-245430293,-1185670668,203973465,3,-87040189,106365838],[-578292386,-281692107,567632749,1,152836850,784552347],[-335845196,-947960463,223938330,1,-160701999,-134156609]]}}]} admitgen:end
  */
 
 #endif /* WALL_48000_Q31_H */
