@@ -277,7 +277,10 @@ std::string missed_mode_finding(const std::vector<ModelResult>& models, const Mi
                      m.own_log_l, m.reference_log_l, reached, shown.order.name(), how);
 }
 
-bool settled(const ModelResult& m) { return m.rerun && m.rerun->settled(); }
+/// Whether `m` is explained by the order's last re-run round (RerunCheck): ln Z agreed and the gap is small.
+bool settled(const ModelResult& run, const MissedMode& m) {
+  return run.rerun && run.rerun->agrees() && m.reference_log_l - m.own_log_l <= RerunCheck::kMaxGapNats;
+}
 
 }  // namespace
 
@@ -285,7 +288,7 @@ std::vector<std::string> missed_mode_notes(const std::vector<ModelResult>& model
   std::vector<std::string> notes;
   for (const MissedMode& m : missed) {
     const ModelResult& run = models[m.order];
-    if (!settled(run)) continue;
+    if (!settled(run, m)) continue;
     notes.push_back(fmt::format(
         "{}; runs adding {} live points did not reach it either and left ln Z where it was ({:+.2f} ± {:.2f} "
         "nats): that point lies in a region holding no evidence that more live points find, and ln Z of {} stands",
@@ -299,7 +302,7 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
   std::vector<std::string> warnings;
   for (const MissedMode& m : missed) {
     const ModelResult& run = models[m.order];
-    if (settled(run)) continue;
+    if (settled(run, m)) continue;
     warnings.push_back(fmt::format("{}; the sampler missed a mode of {}, whose ln Z is underestimated (rerun with "
                                    "more live points, {})",
                                    missed_mode_finding(models, m), run.order.name(), setting("sampler.live")));
@@ -404,7 +407,7 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
   for (int round = 1; round <= settings.missed_mode_retries; ++round) {
     std::vector<std::size_t> which;
     for (const MissedMode& m : missed_modes(data, settings, results))
-      if (rounds[m.order] < round && results[m.order].run.stopped_by != "analytic" && !settled(results[m.order]))
+      if (rounds[m.order] < round && results[m.order].run.stopped_by != "analytic" && !settled(results[m.order], m))
         which.push_back(m.order);
     if (which.empty()) continue;
     const int parts = 1 << round;

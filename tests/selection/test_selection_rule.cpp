@@ -61,3 +61,25 @@ TEST_CASE("missed-mode check: a containing order with a lower best likelihood is
   CHECK(w[0].find("Q0S1") != std::string::npos);
   CHECK(missed_mode_warnings(models, 60.0).empty());
 }
+
+TEST_CASE("missed-mode check: a re-run that left ln Z in place turns a small gap into a note, never a large one") {
+  ModelResult small{Order(1, 2), {}, 0, 0.0, {}, {}}, big{Order(1, 3), {}, 0, 0.0, {}, {}};
+  const std::vector<ModelResult> models{small, big};
+  // The gap is reference − own: 2.4 nats (the reference file's switched-off spare pairs) and 22.5 nats.
+  const MissedMode near{1, 0, 1284.3, false, 1281.9, true}, far{1, 0, 1304.4, false, 1281.9, true};
+  std::vector<ModelResult> rerun = models;
+  // Shift 0.3 ± 0.25: within max(2 errors, 1 nat); shift 1.2 ± 0.25: beyond both.
+  rerun[1].rerun = RerunCheck{0.3, 0.25, 500};
+  CHECK(missed_mode_notes(rerun, {near}).size() == 1);
+  CHECK(missed_mode_warnings(rerun, {near}).empty());
+  CHECK(missed_mode_notes(rerun, {far}).empty());  // kMaxGapNats = 5: a 22.5-nat gap stays a warning
+  CHECK(missed_mode_warnings(rerun, {far}).size() == 1);
+  rerun[1].rerun = RerunCheck{1.2, 0.25, 500};
+  CHECK(missed_mode_notes(rerun, {near}).empty());
+  CHECK(missed_mode_warnings(rerun, {near}).size() == 1);
+  // No re-run at all: a warning.
+  CHECK(missed_mode_notes(models, {near}).empty());
+  const auto w = missed_mode_warnings(models, {near});
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].rfind("Q1S3:", 0) == 0);
+}
