@@ -134,7 +134,8 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                   "calls stay within the first round's (0 = the grid as given)")
       ->check(CLI::Range(0, Order::kMaxPoles))->capture_default_str();
   sub->add_option("--missed-mode-retries", s.missed_mode_retries,
-                  "Re-run orders whose best likelihood is below a nested order's, doubling --live each round")
+                  "Re-run orders whose best likelihood is below a nested order's; each round adds runs that double the "
+                  "order's live points, merged with its run")
       ->check(CLI::Range(0, 6))->capture_default_str();
   add_clearing_flag(*sub, "--no-symmetry-reduction", s.reduce_symmetry,
                     "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
