@@ -7,7 +7,7 @@
 ///                       effective sample size and the name of the order's samples file;
 ///   posterior_QxSy.csv  equally weighted posterior samples of that order, one row per draw, a header
 ///                       of parameter names (fit.json names, reduced form: β ≥ 0, λ and β ascending);
-///   predictive.csv      the data with the selected order's posterior predictive median and 95 % band
+///   predictive.csv      the data with the selected order's model-curve median and 95 % posterior band
 ///                       of Re G, Im G and α (the numbers of fit.json's "predictive").
 /// Numbers print with 17 significant digits (they read back exactly); files depend only on the runs
 /// and the seed, never on the thread count.

@@ -113,7 +113,8 @@ struct FitModel {
   std::optional<std::string> sampler_note;  ///< may name settings (core/errors.hpp, setting())
 };
 
-/// Median and 95 % band of the selected order's posterior predictive.
+/// Median and 95 % band of the selected order's model curve over its posterior (fit.json's "predictive"; the
+/// noise is not added, docs/formats.md).
 struct FitPredictive {
   std::int64_t draws = 0;
   std::vector<double> quantiles;  ///< 0.025, 0.5, 0.975

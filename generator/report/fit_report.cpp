@@ -237,7 +237,8 @@ std::string fit_report_html(const FitRecord& fit, const Measurement& data) {
       number(data.f_hz[0]), number(data.f_hz[data.size() - 1]));
   body += warnings_box(fit.warnings.value_or(std::vector<std::string>{}));
   std::string band_note =
-      fmt::format("The band holds 95 % of the posterior predictive ({} draws) at each frequency; the line is its median.",
+      fmt::format("The band holds 95 % of the posterior of the model curve ({} draws) at each frequency, without the "
+                  "measurement noise (data scatter about it by that noise); the line is its median.",
                   fit.predictive ? fit.predictive->draws : 0);
   const double alpha_width = widest_band(fit, &FitPredictive::alpha);
   if (std::isfinite(alpha_width))

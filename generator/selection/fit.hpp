@@ -3,7 +3,7 @@
 /// Order selection over the grid Q ∈ [0, qmax] × S ∈ [0, smax]: one nested-sampling run per order
 /// (in parallel over orders, each order with its own seed stream so results do not depend on the
 /// thread count), Bayes factors, the selection rule, the selected order's parameter summaries and
-/// its posterior predictive band of G(ω) and α(f).
+/// the posterior band of its model curve G(ω) and α(f).
 #pragma once
 
 #include "core/progress.hpp"
