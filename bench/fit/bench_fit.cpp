@@ -12,7 +12,7 @@
 ///  5. with --order QxSy (and optionally --live N, --sampler full|poles, --basotect for the quick-start
 ///     file): that order alone, no other section: calls, seconds, ns per call, the sampler used and
 ///     any fallback (for profiling one order).
-///  5-6 take --slices K (slices per replacement; default the sampler's rule) and --dlogz X (default automatic).
+///  5-6 take --slices K (slices per replacement; default 3 + dim) and --dlogz X (default automatic).
 ///  6. with --order QxSy --seeds N: that order on seeds S … S + N − 1 (two at a time), then the spread of ln Z
 ///     over the seeds against the mean reported error, and the mean calls: what a change of the sampler must be
 ///     judged by (one seed's calls and ln Z scatter more than most changes move them; docs/validation.md, "Speed").

@@ -229,7 +229,6 @@ std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const Fit
   return missed;
 }
 
-
 }  // namespace
 
 std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
@@ -381,18 +380,27 @@ void run_orders(const Measurement& data, const FitSettings& settings, const std:
   for (std::size_t k = 0; k < tasks.size(); ++k) results[tasks[k].order] = std::move(done[k]);
 }
 
-/// `model` with `parts` merged into its run (inference/run_merge.hpp): live points, calls and times add up.
-ModelResult merged_with(const ModelResult& model, const std::vector<const ModelResult*>& parts) {
-  std::vector<RunPart> runs{{&model.run, model.live}};
+/// `model` with the runs of a re-run round merged into its run (inference/run_merge.hpp): live points, calls and
+/// times add up, and `rerun` holds the round's check, the added runs on their own against the order's run before
+/// them (independent estimates of one ln Z).
+ModelResult merged_with(const ModelResult& model, const std::vector<const ModelResult*>& added) {
+  std::vector<RunPart> parts;
   ModelResult merged = model;
-  for (const ModelResult* p : parts) {
-    runs.push_back({&p->run, p->live});
-    merged.live += p->live;
+  RerunCheck check;
+  for (const ModelResult* p : added) {
+    parts.push_back({&p->run, p->live});
+    check.live += p->live;
     merged.seconds += p->seconds;
     merged.cpu_seconds += p->cpu_seconds;
   }
-  merged.run = merge_runs(runs);
+  const NestedRun fresh = merge_runs(parts);
+  check.log_z_shift = fresh.log_z - model.run.log_z;
+  check.error = std::hypot(fresh.log_z_error, model.run.log_z_error);
+  parts.insert(parts.begin(), RunPart{&model.run, model.live});
+  merged.run = merge_runs(parts);
+  merged.live += check.live;
   merged.parameters = summarize(merged.run, model.order.parameter_names());
+  merged.rerun = check;
   return merged;
 }
 
@@ -419,20 +427,9 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
     const std::vector<ModelResult> done = run_tasks(data, settings, grid, tasks, progress);
     for (std::size_t i : which) {
       std::vector<const ModelResult*> mine;
-      std::vector<RunPart> added;
       for (std::size_t k = 0; k < tasks.size(); ++k)
-        if (tasks[k].order == i) {
-          mine.push_back(&done[k]);
-          added.push_back({&done[k].run, done[k].live});
-        }
-      // The added runs on their own against the order's run before them: independent estimates of one ln Z.
-      const NestedRun fresh = merge_runs(added);
-      RerunCheck check;
-      check.log_z_shift = fresh.log_z - results[i].run.log_z;
-      check.error = std::hypot(fresh.log_z_error, results[i].run.log_z_error);
-      for (const RunPart& p : added) check.live += p.live;
+        if (tasks[k].order == i) mine.push_back(&done[k]);
       results[i] = merged_with(results[i], mine);
-      results[i].rerun = check;
       rounds[i] = round;
     }
   }

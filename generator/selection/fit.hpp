@@ -55,8 +55,8 @@ struct FitSettings {
   SelectionRule rule = SelectionRule::simplest(10.0);  ///< Occam among the orders the evidence cannot tell apart (selection_rule.hpp)
   int threads = 0;  ///< 0 = hardware concurrency
   /// Rounds of re-running orders flagged by missed_mode_warnings, each doubling the order's live points by
-  /// runs added and merged with its run (rerun_missed_modes in fit.cpp; a narrow mode with prior-volume fraction f at the contour where it starts to
-  /// dominate is found only if n·f ≳ 1, Skilling 2006 §8).
+  /// runs added and merged with its run (rerun_missed_modes in fit.cpp; a narrow mode with prior-volume
+  /// fraction f at the contour where it starts to dominate is found only if n·f ≳ 1, Skilling 2006 §8).
   int missed_mode_retries = 2;
   /// Truncate the prior to passive models (Re G(jω) ≥ 0 ∀ω, model/passivity.hpp): ln L = −∞ outside, so
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
