@@ -12,12 +12,13 @@
 ///  5. with --order QxSy (and optionally --live N, --sampler full|poles, --basotect for the quick-start
 ///     file): that order alone, no other section: calls, seconds, ns per call, the sampler used and
 ///     any fallback (for profiling one order).
-///  5-6 take --slices K (slices per replacement; default 3 + dim) and --dlogz X (default automatic).
+///  5-6 take --slices K (slices per replacement; default 3 + dim), --dlogz X (default automatic) and --runs R
+///  (independent runs per order, merged; default FitSettings::runs).
 ///  6. with --order QxSy --seeds N: that order on seeds S … S + N − 1 (two at a time), then the spread of ln Z
 ///     over the seeds against the mean reported error, and the mean calls: what a change of the sampler must be
 ///     judged by (one seed's calls and ln Z scatter more than most changes move them; docs/validation.md, "Speed").
 /// Usage: bench_fit [DATA.csv] [--quick] [--basotect] [--order QxSy [--live N] [--sampler KIND] [--seed S]
-///  [--seeds N] [--slices K] [--dlogz X]]  (--quick skips the 1-thread grid)
+///  [--seeds N] [--slices K] [--dlogz X] [--runs R]]  (--quick skips the 1-thread grid)
 #include "core/parallel.hpp"
 #include "core/progress.hpp"
 #include "data/csv_reader.hpp"
@@ -136,8 +137,9 @@ double grid(const Measurement& data, int threads, bool print_models, SamplerKind
 
 /// One order alone with one sampler (section 5 of the file comment).
 void single_order(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed,
-                  const NestedSettings& given) {
+                  const NestedSettings& given, int runs) {
   FitSettings s;
+  s.runs = runs;
   s.sampler = given;
   s.sampler_kind = kind;
   s.sampler.live = live;
@@ -156,8 +158,9 @@ void single_order(const Measurement& data, const Order& order, SamplerKind kind,
 
 /// One order over `seeds` seeds (section 6 of the file comment).
 void seed_spread(const Measurement& data, const Order& order, SamplerKind kind, int live, std::uint64_t seed,
-                 int seeds, const NestedSettings& given) {
+                 int seeds, const NestedSettings& given, int runs_per_order) {
   FitSettings s;
+  s.runs = runs_per_order;
   s.sampler = given;
   s.sampler_kind = kind;
   s.sampler.live = live;
@@ -185,9 +188,9 @@ void seed_spread(const Measurement& data, const Order& order, SamplerKind kind, 
   for (const ModelResult& m : runs) variance += (m.run.log_z - mean) * (m.run.log_z - mean);
   const double sd = std::sqrt(variance / std::max(n - 1.0, 1.0));
   // The standard deviation of n values has a relative standard error of about 1/√(2(n − 1)).
-  fmt::print("{} over {} seeds ({} live): mean ln Z {:.3f} ± {:.3f} (standard error), spread {:.3f} (± {:.0f} %) against "
+  fmt::print("{} over {} seeds ({} live, {} runs each): mean ln Z {:.3f} ± {:.3f} (standard error), spread {:.3f} (± {:.0f} %) against "
              "the mean reported error {:.3f}: {:.2f}x; mean calls {:.0f}\n",
-             order.name(), seeds, live, mean, sd / std::sqrt(n), sd, 100.0 / std::sqrt(2.0 * std::max(n - 1.0, 1.0)),
+             order.name(), seeds, live, s.runs, mean, sd / std::sqrt(n), sd, 100.0 / std::sqrt(2.0 * std::max(n - 1.0, 1.0)),
              error, sd / error, calls);
 }
 
@@ -202,6 +205,7 @@ int main(int argc, char** argv) {
   int seeds = 0;
   SamplerKind single_kind = SamplerKind::poles;
   NestedSettings chosen;  // --slices and --dlogz of sections 5-6
+  int runs = FitSettings{}.runs;
   for (int i = 1; i < argc; ++i) {
     const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--quick") == 0) quick = true;
@@ -213,6 +217,7 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--sampler") == 0 && has_value) single_kind = parse_sampler_kind(argv[++i]);
     else if (std::strcmp(argv[i], "--slices") == 0 && has_value) chosen.slices = std::stoi(argv[++i]);
     else if (std::strcmp(argv[i], "--dlogz") == 0 && has_value) chosen.dlogz = std::stod(argv[++i]);
+    else if (std::strcmp(argv[i], "--runs") == 0 && has_value) runs = std::stoi(argv[++i]);
     else path = argv[i];
   }
   const std::string quick_start = std::string(ADMITGEN_SAMPLES) + "/basotect_tuberlin/round_10cm.csv";
@@ -220,8 +225,8 @@ int main(int argc, char** argv) {
   foam_options.columns = ColumnMap::parse("f,_,_,_,_,re,im,_");
   if (!order_name.empty()) {
     const Measurement data = basotect ? read_measurement(quick_start, foam_options) : read_measurement(path, ReadOptions{});
-    if (seeds > 0) seed_spread(data, Order::parse(order_name), single_kind, live, seed, seeds, chosen);
-    else single_order(data, Order::parse(order_name), single_kind, live, seed, chosen);
+    if (seeds > 0) seed_spread(data, Order::parse(order_name), single_kind, live, seed, seeds, chosen, runs);
+    else single_order(data, Order::parse(order_name), single_kind, live, seed, chosen, runs);
     return 0;
   }
   const Measurement data = read_measurement(path, ReadOptions{});

@@ -137,6 +137,10 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                   "Re-run orders whose best likelihood is below a nested order's; each round adds runs that double the "
                   "order's live points, merged with its run")
       ->check(CLI::Range(0, 6))->capture_default_str();
+  sub->add_option("--runs", s.runs,
+                  "Independent runs per order, sharing --live and merged; with 2 or more the error of ln Z includes "
+                  "their scatter (1 = one run, whose error is sqrt(H/live) alone)")
+      ->check(CLI::Range(1, 64))->capture_default_str();
   add_clearing_flag(*sub, "--no-symmetry-reduction", s.reduce_symmetry,
                     "Sample the full prior (both beta signs, all pole orderings); same evidence, slower");
   sub->add_flag("--passive", s.passive,

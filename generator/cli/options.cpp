@@ -122,6 +122,7 @@ std::string flag_for(const std::string& key) {
       {"reduce_symmetry = false", "--no-symmetry-reduction"},
       {"rho_c", "--rho-c"},
       {"rule", "--select"},
+      {"runs", "--runs"},
       {"sampler.live", "--live"},
       {"sampler_kind", "--sampler"},
       {"smax", "--smax"},

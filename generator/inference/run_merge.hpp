@@ -9,7 +9,11 @@
 /// points of every run by the likelihood they were sampled under, the merged live count at a point is the
 /// sum of each run's count there: n_k below the run's last death, then n_k − j after its j-th final live
 /// point (the final live points close the run one at a time). The prior volume then shrinks by e^{−1/n_i}
-/// at point i (Skilling 2006, §3), point i weighs L_i (X_{i−1} − X_i), and ln Z has the error √(H/Σ n_k).
+/// at point i (Skilling 2006, §3), point i weighs L_i (X_{i−1} − X_i), and ln Z has the error √(H/Σ n_k)
+/// where the runs agree as that error says they should. Where they scatter more (Var ln Z_k = c/n_k with
+/// c > H: replacements that stay in their mode let the live points' share of the modes drift, which H does
+/// not see), the error is √(ĉ/Σ n_k), ĉ the unbiased estimate of c from the runs' ln Z (scatter_variance in
+/// run_merge.cpp).
 #pragma once
 
 #include "inference/nested_sampler.hpp"

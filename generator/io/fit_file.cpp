@@ -85,6 +85,7 @@ void fields(V& v, FitSamplerSettings& s) {
   v("dlogz", s.dlogz);
   v("max_iterations", s.max_iterations);
   v("missed_mode_retries", s.missed_mode_retries);
+  v("runs", s.runs);
   v.custom("slices", s.slices, Slices{});
   v("residues", s.residues);
   v.ignored("truncation_tolerance_nats");  // written by versions with the residue box's correction

@@ -42,6 +42,7 @@ struct FitSamplerSettings {
   double dlogz = 0.0;
   std::int64_t max_iterations = 0;
   std::optional<std::int64_t> missed_mode_retries;  ///< absent in older fits
+  std::optional<std::int64_t> runs;                 ///< independent runs per order; absent in older fits (one)
   std::optional<std::int64_t> slices;               ///< empty: automatic ("3 + dim")
   std::optional<std::string> residues;              ///< absent in older fits
 };

@@ -47,15 +47,40 @@ Model order_model(const Measurement& data, const Order& order, const FitSettings
 
 namespace {
 
+/// Each of an order's first runs needs live points of its own to sample with (kMinLivePerRun).
+void check_runs(const FitSettings& settings) {
+  constexpr int kMinLivePerRun = 5;
+  if (settings.runs < 1 || settings.sampler.live / settings.runs < kMinLivePerRun)
+    throw InputError(fmt::format("{} = {} split over {} = {} runs leaves fewer than {} live points per run; lower "
+                                 "{} or raise {}",
+                                 setting("sampler.live"), settings.sampler.live, setting("runs"), settings.runs,
+                                 kMinLivePerRun, setting("runs"), setting("sampler.live")));
+}
+
 /// Live points of each run that a re-run round adds (the first run has settings.sampler.live).
 int part_live(int live) { return std::max(2, (live + 1) / 2); }
 
-/// Round 0 is an order's first run; round r ≥ 1 adds 2^r parts of part_live points each on streams of their own.
+/// Independent runs an order's first run is made of: settings.runs, or one where nothing is sampled (an order
+/// without poles under the pole sampler, whose evidence is the closed form).
+int first_run_parts(const Order& order, const FitSettings& settings) {
+  const bool analytic = order_sampler(settings) == SamplerKind::poles && order.q() + order.s() == 0;
+  return analytic ? 1 : std::max(settings.runs, 1);
+}
+
+/// Round 0 is an order's first run, `part` one of its first_run_parts, each with its share of the live points
+/// (the first ones one more where they do not divide); round r ≥ 1 adds 2^r parts of part_live points each. Each
+/// part has a stream of its own; every part stops at the stop of settings.sampler (the fit's live points).
 NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round, int part) {
   NestedSettings sampler = settings.sampler;
+  sampler.dlogz = settings.sampler.stop_dlogz();
   const std::uint64_t stream = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
-  sampler.seed = round == 0 ? stream : derive_seed(stream, static_cast<std::uint64_t>(part) + 1);
-  if (round > 0) sampler.live = part_live(settings.sampler.live);
+  sampler.seed = round == 0 && part == 0 ? stream : derive_seed(stream, static_cast<std::uint64_t>(part) + 1);
+  if (round > 0) {
+    sampler.live = part_live(settings.sampler.live);
+  } else {
+    const int parts = first_run_parts(order, settings);
+    sampler.live = settings.sampler.live / parts + (part < settings.sampler.live % parts ? 1 : 0);
+  }
   return sampler;
 }
 
@@ -99,7 +124,8 @@ FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
 
 namespace {
 
-/// fit_order without its timing: what the comparison driver runs (and times) for each run of a fit.
+/// One run of an order, part `part` of round `round` (order_sampler_settings), untimed: what the comparison
+/// driver runs (and times) for each run of a fit.
 ModelResult run_order(const Measurement& data, const Order& order, const FitSettings& given,
                       const NestedProgressFn& progress, int round, int part) {
   const FitSettings settings = with_band_priors(given, data);
@@ -117,13 +143,49 @@ ModelResult run_order(const Measurement& data, const Order& order, const FitSett
 
 }  // namespace
 
+namespace {
+
+/// The runs `parts` of one order merged into one (inference/run_merge.hpp): live points, calls and times add up;
+/// the rest is the first part's. Summaries are left to the caller.
+ModelResult merged(const std::vector<const ModelResult*>& parts) {
+  ModelResult out = *parts.front();
+  std::vector<RunPart> runs;
+  out.live = 0;
+  out.seconds = out.cpu_seconds = 0.0;
+  for (const ModelResult* p : parts) {
+    runs.push_back({&p->run, p->live});
+    out.live += p->live;
+    out.seconds += p->seconds;
+    out.cpu_seconds += p->cpu_seconds;
+  }
+  out.run = merge_runs(runs);
+  return out;
+}
+
+/// An order's first run from its parts (first_run_parts of them, in part order).
+ModelResult first_run(const std::vector<const ModelResult*>& parts) {
+  if (parts.size() == 1) return *parts.front();
+  ModelResult out = merged(parts);
+  out.parameters = summarize(out.run, out.order.parameter_names());
+  return out;
+}
+
+}  // namespace
+
 ModelResult fit_order(const Measurement& data, const Order& order, const FitSettings& settings,
                       const NestedProgressFn& progress) {
-  std::optional<ModelResult> result;
-  const TaskTime time = timed([&] { result.emplace(run_order(data, order, settings, progress, 0, 0)); });
-  result->seconds = time.seconds;
-  result->cpu_seconds = time.cpu_seconds;
-  return std::move(*result);
+  check_runs(settings);
+  std::vector<ModelResult> parts;
+  std::vector<const ModelResult*> done;
+  const int n = first_run_parts(order, with_band_priors(settings, data));
+  parts.reserve(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const TaskTime time = timed([&] { parts.push_back(run_order(data, order, settings, progress, 0, k)); });
+    parts.back().seconds = time.seconds;
+    parts.back().cpu_seconds = time.cpu_seconds;
+    done.push_back(&parts.back());
+  }
+  return first_run(done);
 }
 
 PredictiveBand predictive_band(const Measurement& data, const ModelResult& model, int draws, std::uint64_t seed) {
@@ -276,6 +338,11 @@ std::string missed_mode_finding(const std::vector<ModelResult>& models, const Mi
                      m.own_log_l, m.reference_log_l, reached, shown.order.name(), how);
 }
 
+/// Whether an order's independent runs disagree by more than the largest gap a note explains (its error, from
+/// their scatter, above RerunCheck::kMaxGapNats): one found evidence another missed. Re-run rounds treat it as
+/// a missed mode; the fit warns if it stays (runs_disagree_warnings).
+bool runs_disagree(const ModelResult& m) { return m.run.log_z_error > RerunCheck::kMaxGapNats; }
+
 /// Whether `m` is explained by the order's last re-run round (RerunCheck): ln Z agreed and the gap is small.
 bool settled(const ModelResult& run, const MissedMode& m) {
   return run.rerun && run.rerun->agrees() && m.reference_log_l - m.own_log_l <= RerunCheck::kMaxGapNats;
@@ -309,6 +376,18 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
   return warnings;
 }
 
+std::vector<std::string> runs_disagree_warnings(const std::vector<ModelResult>& models) {
+  std::vector<std::string> warnings;
+  for (const ModelResult& m : models)
+    if (runs_disagree(m))
+      warnings.push_back(fmt::format("{}: its independent runs ({} live points in all) disagree, ln Z {:.1f} ± {:.1f}: "
+                                     "some found a mode others missed, and ln Z of {} is that uncertain (rerun with "
+                                     "more live points, {})",
+                                     m.order.name(), m.live, m.run.log_z, m.run.log_z_error, m.order.name(),
+                                     setting("sampler.live")));
+  return warnings;
+}
+
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance) {
   return missed_mode_warnings(models, missed_modes(models, tolerance));
 }
@@ -335,6 +414,7 @@ namespace {
 struct RunTask {
   std::size_t order;
   int round = 0, part = 0;
+  int parts = 1;  ///< the parts of this task's round for this order (for its label)
 };
 
 /// Runs `tasks` on the comparison driver (inference/comparison.hpp), largest order first; returns one result
@@ -349,7 +429,10 @@ std::vector<ModelResult> run_tasks(const Measurement& data, const FitSettings& s
   for (const RunTask& t : tasks) {
     const Order& o = grid[t.order];
     const NestedSettings sampler = order_sampler_settings(o, settings, t.round, t.part);
-    jobs.push_back({t.round == 0 ? o.name() : fmt::format("{} (+{})", o.name(), t.part + 1),
+    const std::string label = t.round > 0    ? fmt::format("{} (+{})", o.name(), t.part + 1)
+                              : t.parts > 1 ? fmt::format("{} ({}/{})", o.name(), t.part + 1, t.parts)
+                                            : o.name();
+    jobs.push_back({label,
                     expected_work(o, settings, sampler.live), sampler.stop_dlogz()});
   }
   std::vector<ModelResult> results(tasks.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
@@ -375,33 +458,34 @@ std::vector<ModelResult> run_tasks(const Measurement& data, const FitSettings& s
 void run_orders(const Measurement& data, const FitSettings& settings, const std::vector<Order>& grid,
                 const std::vector<std::size_t>& which, std::vector<ModelResult>& results, Progress& progress) {
   std::vector<RunTask> tasks;
-  for (std::size_t i : which) tasks.push_back({i, 0, 0});
-  std::vector<ModelResult> done = run_tasks(data, settings, grid, tasks, progress);
-  for (std::size_t k = 0; k < tasks.size(); ++k) results[tasks[k].order] = std::move(done[k]);
+  for (std::size_t i : which) {
+    const int parts = first_run_parts(grid[i], settings);
+    for (int k = 0; k < parts; ++k) tasks.push_back({i, 0, k, parts});
+  }
+  const std::vector<ModelResult> done = run_tasks(data, settings, grid, tasks, progress);
+  for (std::size_t i : which) {
+    std::vector<const ModelResult*> mine;
+    for (std::size_t k = 0; k < tasks.size(); ++k)
+      if (tasks[k].order == i) mine.push_back(&done[k]);
+    results[i] = first_run(mine);
+  }
 }
 
 /// `model` with the runs of a re-run round merged into its run (inference/run_merge.hpp): live points, calls and
 /// times add up, and `rerun` holds the round's check, the added runs on their own against the order's run before
 /// them (independent estimates of one ln Z).
 ModelResult merged_with(const ModelResult& model, const std::vector<const ModelResult*>& added) {
-  std::vector<RunPart> parts;
-  ModelResult merged = model;
+  const NestedRun fresh = merged(added).run;
   RerunCheck check;
-  for (const ModelResult* p : added) {
-    parts.push_back({&p->run, p->live});
-    check.live += p->live;
-    merged.seconds += p->seconds;
-    merged.cpu_seconds += p->cpu_seconds;
-  }
-  const NestedRun fresh = merge_runs(parts);
   check.log_z_shift = fresh.log_z - model.run.log_z;
   check.error = std::hypot(fresh.log_z_error, model.run.log_z_error);
-  parts.insert(parts.begin(), RunPart{&model.run, model.live});
-  merged.run = merge_runs(parts);
-  merged.live += check.live;
-  merged.parameters = summarize(merged.run, model.order.parameter_names());
-  merged.rerun = check;
-  return merged;
+  std::vector<const ModelResult*> all{&model};
+  all.insert(all.end(), added.begin(), added.end());
+  ModelResult out = merged(all);
+  check.live = out.live - model.live;
+  out.parameters = summarize(out.run, model.order.parameter_names());
+  out.rerun = check;
+  return out;
 }
 
 /// Re-runs orders that missed a mode (missed_modes), in rounds r = 1 … missed_mode_retries: round r adds 2^r
@@ -417,6 +501,9 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
     for (const MissedMode& m : missed_modes(data, settings, results))
       if (rounds[m.order] < round && results[m.order].run.stopped_by != "analytic" && !settled(results[m.order], m))
         which.push_back(m.order);
+    for (std::size_t i = 0; i < results.size(); ++i)
+      if (rounds[i] < round && runs_disagree(results[i]) && std::find(which.begin(), which.end(), i) == which.end())
+        which.push_back(i);
     if (which.empty()) continue;
     const int parts = 1 << round;
     progress.message(fmt::format("re-running {} order(s) that missed a mode: {} more runs of {} live points each",
@@ -501,6 +588,7 @@ std::vector<ModelResult> run_first_round(const Measurement& data, const FitSetti
   const FitSettings settings = with_band_priors(given, data);
   const std::vector<Order> grid = order_grid(settings.qmax, settings.smax);
   check_constrainable(data, settings);
+  check_runs(settings);
   std::vector<ModelResult> results(grid.size(), ModelResult{Order(0, 0), {}, 0, 0.0, {}});
   std::vector<std::size_t> which(grid.size());
   std::iota(which.begin(), which.end(), std::size_t{0});
@@ -530,6 +618,7 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   const std::vector<MissedMode> missed = missed_modes(data, settings, fit.models);
   fit.warnings = missed_mode_warnings(fit.models, missed);
   fit.notes = missed_mode_notes(fit.models, missed);
+  for (std::string& w : runs_disagree_warnings(fit.models)) fit.warnings.push_back(std::move(w));
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
   // One task per order, each writing its own slot: the same bits at any thread count (docs/method.md, "Determinism").
   std::vector<std::size_t> orders(fit.models.size());

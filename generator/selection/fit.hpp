@@ -58,6 +58,13 @@ struct FitSettings {
   /// runs added and merged with its run (rerun_missed_modes in fit.cpp; a narrow mode with prior-volume
   /// fraction f at the contour where it starts to dominate is found only if n·f ≳ 1, Skilling 2006 §8).
   int missed_mode_retries = 2;
+  /// Independent runs an order's first run is made of, each with its share of sampler.live and a seed stream of
+  /// its own, merged into one run (inference/run_merge.hpp). With two or more, the error of ln Z comes from their
+  /// scatter where it exceeds √(H/n): a slice chain starts from a live point and stays in its mode, so the live
+  /// points' share of the modes drifts, which √(H/n) does not see. One by default: at a fixed total of live
+  /// points, runs of half as many find fewer modes of real data's larger orders (docs/method.md, "Model selection",
+  /// "Independent runs", has the measurements both ways).
+  int runs = 1;
   /// Truncate the prior to passive models (Re G(jω) ≥ 0 ∀ω, model/passivity.hpp): ln L = −∞ outside, so
   /// evidence and posterior are those of the prior renormalised to the passive set (NestedRun::
   /// log_support_fraction holds the estimated passive prior fraction).
@@ -163,6 +170,9 @@ std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& mo
 /// kMaxGapNats): a point of higher marginal exists, and runs with more live points left ln Z where it was.
 /// missed_mode_warnings skips these.
 std::vector<std::string> missed_mode_notes(const std::vector<ModelResult>& models, const std::vector<MissedMode>& missed);
+/// One warning per order whose independent runs (FitSettings::runs, and the re-runs merged with them) still
+/// disagree by more than RerunCheck::kMaxGapNats on the error of ln Z.
+std::vector<std::string> runs_disagree_warnings(const std::vector<ModelResult>& models);
 /// missed_mode_warnings of the check by contained orders alone.
 std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance = 2.0);
 

@@ -60,6 +60,7 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
   r.sampler.dlogz = s.sampler.stop_dlogz();
   r.sampler.max_iterations = s.sampler.max_iterations;
   r.sampler.missed_mode_retries = s.missed_mode_retries;
+  r.sampler.runs = s.runs;
   if (s.sampler.slices > 0) r.sampler.slices = s.sampler.slices;
   r.sampler.residues = order_sampler(s) == SamplerKind::poles
                            ? "integrated exactly with the noise (poles sampled; residues and noise drawn from their "

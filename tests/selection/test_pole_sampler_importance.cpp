@@ -188,15 +188,15 @@ TEST_SUITE("statistical") {
     }
   }
 
-  TEST_CASE("pole sampler: 24 seeds scatter as reported and centre on importance sampling (Q1S1, Q1S2)") {
-    // Seeds 100-123 under the band priors of the data; Q1S1 with 100 live points, Q1S2 with 300. The sample
-    // standard deviation of 24 values has a relative standard error of 1/√(2·23) ≈ 15 %, so the band
-    // [0.67, 1.5] × the mean reported error (about ±2.7 of those standard errors) is decisive; the mean of
-    // the 24 estimates has standard error spread/√24, and a sampler whose exploration misses part of the pole
-    // space would sit several of those below the reference. Measured: Q1S1 spread 0.51, mean reported error
-    // 0.43 (ratio 1.18); Q1S2 spread 0.45, mean reported error 0.23 (ratio 1.91, outside the band: its
-    // estimates scatter more than they report: the 1.5 target holds for Q1S1 only, and Q1S2 is held to 2.5 so that
-    // a worse spread still fails; docs/validation.md records the gap).
+  TEST_CASE("pole sampler: 24 seeds of two merged runs each scatter as reported and centre on importance sampling (Q1S1, Q1S2)") {
+    // Seeds 100-123 under the band priors of the data; Q1S1 with 100 live points, Q1S2 with 300, each order's
+    // first run made of two runs of half the live points (FitSettings::runs = 2), whose scatter enters the
+    // reported error (inference/run_merge.hpp). The sample standard deviation of 24 values has a relative
+    // standard error of 1/√(2·23) ≈ 15 %, so the band [0.67, 1.5] × the mean reported error (about ±2.7 of
+    // those standard errors) is decisive; the mean of the 24 estimates has standard error spread/√24, and a
+    // sampler whose exploration misses part of the pole space would sit several of those below the reference.
+    // Measured: Q1S1 spread 0.46, mean reported error 0.48 (ratio 0.95); Q1S2 0.36 against 0.32 (1.12). With one
+    // run (the default) √(H/n) alone is reported: Q1S2 then scatters 1.91 times it (docs/validation.md).
     const Measurement data = reference_file();
     const PriorRanges priors = PriorRanges::band(data.omega().maxCoeff());
     for (const auto& [order, live] : {std::pair{Order(1, 1), 100}, std::pair{Order(1, 2), 300}}) {
@@ -205,6 +205,7 @@ TEST_SUITE("statistical") {
       settings.priors = priors;
       settings.sampler.live = live;
       settings.sampler_kind = SamplerKind::poles;
+      settings.runs = 2;
       std::vector<double> log_z, err;
       int on_poles = 0;
       for (std::uint64_t seed = 100; seed < 124; ++seed) {
@@ -220,7 +221,7 @@ TEST_SUITE("statistical") {
               reported, " (ratio ", spread / reported, "), importance sampling ", reference.log_z, " ± ",
               reference.error, ", ", on_poles, " runs on the pole sampler");
       CHECK(on_poles == 24);
-      CHECK(spread <= (order == Order(1, 1) ? 1.5 : 2.5) * reported);
+      CHECK(spread <= 1.5 * reported);
       CHECK(spread >= 0.67 * reported);
       CHECK(std::abs(mean - reference.log_z) <= 3.0 * std::hypot(spread / std::sqrt(n), reference.error));
     }

@@ -83,3 +83,17 @@ TEST_CASE("missed-mode check: a re-run that left ln Z in place turns a small gap
   REQUIRE(w.size() == 1);
   CHECK(w[0].rfind("Q1S3:", 0) == 0);
 }
+
+TEST_CASE("disagreeing runs: an error of ln Z above the largest gap a note explains is a warning") {
+  // runs_disagree_warnings flags an error above RerunCheck::kMaxGapNats (5 nats): 5.5 is flagged, 4.5 is not
+  // (√(H/n) alone never comes near: H of a few hundred nats at 100 live points gives under 2).
+  ModelResult agree{Order(4, 4), {}, 100, 0.0, {}, {}}, split{Order(4, 5), {}, 100, 0.0, {}, {}};
+  agree.run.log_z_error = 4.5;
+  split.run.log_z_error = 5.5;
+  split.run.log_z = 8324.6;
+  const auto w = runs_disagree_warnings({agree, split});
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].rfind("Q4S5:", 0) == 0);
+  CHECK(w[0].find("8324.6 ± 5.5") != std::string::npos);
+  CHECK(w[0].find(setting("sampler.live")) != std::string::npos);  // the fix: more live points
+}
