@@ -68,7 +68,7 @@ struct NestedRun {
   /// marginal ln L(ψ), inference/poles_sampler.hpp); empty when log_likelihood is it.
   std::vector<double> sampled_log_likelihood;
   double log_z = 0.0;
-  double log_z_error = 0.0;            ///< √(H/n); of merged runs, their scatter where larger (run_merge.hpp)
+  double log_z_error = 0.0;            ///< √(H/n)
   double information = 0.0;            ///< H in nats
   double max_log_likelihood = 0.0;
   long calls = 0;                      ///< likelihood evaluations (initial live points included)

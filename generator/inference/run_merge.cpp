@@ -25,22 +25,6 @@ const std::vector<double>& sampled(const NestedRun& run) {
   return run.sampled_log_likelihood.empty() ? run.log_likelihood : run.sampled_log_likelihood;
 }
 
-/// c in Var(ln Z_k) = c / n_k, estimated from the parts' scatter about their live-weighted mean μ:
-/// E[Σ n_k (ln Z_k − μ)²] = Σ n_k (c/n_k − c/N) = c (m − 1) for m parts of N live points in all, so the sum over
-/// m − 1 is unbiased for c, and c / N for the variance of the merged ln Z (0 for one part).
-double scatter_variance(const std::vector<RunPart>& parts) {
-  if (parts.size() < 2) return 0.0;
-  double live = 0.0, mean = 0.0;
-  for (const RunPart& p : parts) {
-    live += p.live;
-    mean += p.live * p.run->log_z;
-  }
-  mean /= live;
-  double sum = 0.0;
-  for (const RunPart& p : parts) sum += p.live * (p.run->log_z - mean) * (p.run->log_z - mean);
-  return sum / static_cast<double>(parts.size() - 1);
-}
-
 }  // namespace
 
 NestedRun merge_runs(const std::vector<RunPart>& parts) {
@@ -112,10 +96,26 @@ NestedRun merge_runs(const std::vector<RunPart>& parts) {
   }
   merged.log_z = acc.log_z;
   merged.information = std::max(acc.h, 0.0);
-  merged.log_z_error = std::sqrt(std::max(merged.information, scatter_variance(parts)) / live_sum);
+  merged.log_z_error = std::sqrt(merged.information / live_sum);
   merged.max_log_likelihood = *std::max_element(merged.log_likelihood.begin(), merged.log_likelihood.end());
   merged.log_support_fraction = std::log(support / live_sum);
   return merged;
+}
+
+// c in Var(ln Z_k) = c / n_k, estimated from the parts' scatter about their live-weighted mean μ:
+// E[Σ n_k (ln Z_k − μ)²] = Σ n_k (c/n_k − c/N) = c (m − 1) for m parts of N live points in all, so the sum over
+// m − 1 is unbiased for c, and c / N for the variance of the merged ln Z.
+double scatter_error(const std::vector<RunPart>& parts) {
+  if (parts.size() < 2) return 0.0;
+  double live = 0.0, mean = 0.0;
+  for (const RunPart& p : parts) {
+    live += p.live;
+    mean += p.live * p.run->log_z;
+  }
+  mean /= live;
+  double sum = 0.0;
+  for (const RunPart& p : parts) sum += p.live * (p.run->log_z - mean) * (p.run->log_z - mean);
+  return std::sqrt(sum / static_cast<double>(parts.size() - 1) / live);
 }
 
 }  // namespace admitgen

@@ -9,11 +9,9 @@
 /// points of every run by the likelihood they were sampled under, the merged live count at a point is the
 /// sum of each run's count there: n_k below the run's last death, then n_k − j after its j-th final live
 /// point (the final live points close the run one at a time). The prior volume then shrinks by e^{−1/n_i}
-/// at point i (Skilling 2006, §3), point i weighs L_i (X_{i−1} − X_i), and ln Z has the error √(H/Σ n_k)
-/// where the runs agree as that error says they should. Where they scatter more (Var ln Z_k = c/n_k with
-/// c > H: replacements that stay in their mode let the live points' share of the modes drift, which H does
-/// not see), the error is √(ĉ/Σ n_k), ĉ the unbiased estimate of c from the runs' ln Z (scatter_variance in
-/// run_merge.cpp).
+/// at point i (Skilling 2006, §3), point i weighs L_i (X_{i−1} − X_i), and ln Z has the error √(H/Σ n_k).
+/// Runs can scatter more than that error says (Var ln Z_k = c/n_k with c > H: replacements that stay in their
+/// mode let the live points' share of the modes drift, which H does not see); scatter_error measures it.
 #pragma once
 
 #include "inference/nested_sampler.hpp"
@@ -35,5 +33,9 @@ struct RunPart {
 /// agree on which. Ties are broken by part, then by position. calls and iterations are the parts' sums,
 /// stopped_by the first part's, the support fraction the live-weighted mean of theirs.
 NestedRun merge_runs(const std::vector<RunPart>& parts);
+
+/// The error of the merged ln Z from the runs' own scatter, √(ĉ/Σ n_k) with ĉ = Σ n_k (ln Z_k − μ)² / (m − 1)
+/// the unbiased estimate of c (μ the live-weighted mean of the m runs' ln Z); 0 for one run.
+double scatter_error(const std::vector<RunPart>& parts);
 
 }  // namespace admitgen

@@ -68,11 +68,11 @@ int first_run_parts(const Order& order, const FitSettings& settings) {
 }
 
 /// Round 0 is an order's first run, `part` one of its first_run_parts, each with its share of the live points
-/// (the first ones one more where they do not divide); round r ≥ 1 adds 2^r parts of part_live points each. Each
-/// part has a stream of its own; every part stops at the stop of settings.sampler (the fit's live points).
+/// (the first ones one more where they do not divide) and the stop of the fit's live points; round r ≥ 1 adds
+/// 2^r parts of part_live points each, with the stop of their own. Each part has a stream of its own.
 NestedSettings order_sampler_settings(const Order& order, const FitSettings& settings, int round, int part) {
   NestedSettings sampler = settings.sampler;
-  sampler.dlogz = settings.sampler.stop_dlogz();
+  if (round == 0) sampler.dlogz = settings.sampler.stop_dlogz();
   const std::uint64_t stream = derive_seed(order_seed(settings.sampler.seed, order), static_cast<std::uint64_t>(round));
   sampler.seed = round == 0 && part == 0 ? stream : derive_seed(stream, static_cast<std::uint64_t>(part) + 1);
   if (round > 0) {
@@ -146,8 +146,9 @@ ModelResult run_order(const Measurement& data, const Order& order, const FitSett
 namespace {
 
 /// The runs `parts` of one order merged into one (inference/run_merge.hpp): live points, calls and times add up;
-/// the rest is the first part's. Summaries are left to the caller.
-ModelResult merged(const std::vector<const ModelResult*>& parts) {
+/// the rest is the first part's. With `scatter` (a fit of independent runs, FitSettings::runs ≥ 2) the error
+/// of ln Z is their scatter where it exceeds √(H/n). Summaries are left to the caller.
+ModelResult merged(const std::vector<const ModelResult*>& parts, bool scatter) {
   ModelResult out = *parts.front();
   std::vector<RunPart> runs;
   out.live = 0;
@@ -159,13 +160,14 @@ ModelResult merged(const std::vector<const ModelResult*>& parts) {
     out.cpu_seconds += p->cpu_seconds;
   }
   out.run = merge_runs(runs);
+  if (scatter) out.run.log_z_error = std::max(out.run.log_z_error, scatter_error(runs));
   return out;
 }
 
 /// An order's first run from its parts (first_run_parts of them, in part order).
 ModelResult first_run(const std::vector<const ModelResult*>& parts) {
   if (parts.size() == 1) return *parts.front();
-  ModelResult out = merged(parts);
+  ModelResult out = merged(parts, true);
   out.parameters = summarize(out.run, out.order.parameter_names());
   return out;
 }
@@ -339,8 +341,9 @@ std::string missed_mode_finding(const std::vector<ModelResult>& models, const Mi
 }
 
 /// Whether an order's independent runs disagree by more than the largest gap a note explains (its error, from
-/// their scatter, above RerunCheck::kMaxGapNats): one found evidence another missed. Re-run rounds treat it as
-/// a missed mode; the fit warns if it stays (runs_disagree_warnings).
+/// their scatter, above RerunCheck::kMaxGapNats): one found evidence another missed. Where the fit asked for
+/// independent runs (FitSettings::runs ≥ 2), re-run rounds treat it as a missed mode and the fit warns if it
+/// stays (runs_disagree_warnings).
 bool runs_disagree(const ModelResult& m) { return m.run.log_z_error > RerunCheck::kMaxGapNats; }
 
 /// Whether `m` is explained by the order's last re-run round (RerunCheck): ln Z agreed and the gap is small.
@@ -473,15 +476,15 @@ void run_orders(const Measurement& data, const FitSettings& settings, const std:
 
 /// `model` with the runs of a re-run round merged into its run (inference/run_merge.hpp): live points, calls and
 /// times add up, and `rerun` holds the round's check, the added runs on their own against the order's run before
-/// them (independent estimates of one ln Z).
-ModelResult merged_with(const ModelResult& model, const std::vector<const ModelResult*>& added) {
-  const NestedRun fresh = merged(added).run;
+/// them (independent estimates of one ln Z); `scatter` as in merged.
+ModelResult merged_with(const ModelResult& model, const std::vector<const ModelResult*>& added, bool scatter) {
+  const NestedRun fresh = merged(added, scatter).run;
   RerunCheck check;
   check.log_z_shift = fresh.log_z - model.run.log_z;
   check.error = std::hypot(fresh.log_z_error, model.run.log_z_error);
   std::vector<const ModelResult*> all{&model};
   all.insert(all.end(), added.begin(), added.end());
-  ModelResult out = merged(all);
+  ModelResult out = merged(all, scatter);
   check.live = out.live - model.live;
   out.parameters = summarize(out.run, model.order.parameter_names());
   out.rerun = check;
@@ -501,7 +504,7 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
     for (const MissedMode& m : missed_modes(data, settings, results))
       if (rounds[m.order] < round && results[m.order].run.stopped_by != "analytic" && !settled(results[m.order], m))
         which.push_back(m.order);
-    for (std::size_t i = 0; i < results.size(); ++i)
+    for (std::size_t i = 0; i < results.size() && settings.runs > 1; ++i)
       if (rounds[i] < round && runs_disagree(results[i]) && std::find(which.begin(), which.end(), i) == which.end())
         which.push_back(i);
     if (which.empty()) continue;
@@ -516,7 +519,7 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
       std::vector<const ModelResult*> mine;
       for (std::size_t k = 0; k < tasks.size(); ++k)
         if (tasks[k].order == i) mine.push_back(&done[k]);
-      results[i] = merged_with(results[i], mine);
+      results[i] = merged_with(results[i], mine, settings.runs > 1);
       rounds[i] = round;
     }
   }
@@ -618,7 +621,8 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   const std::vector<MissedMode> missed = missed_modes(data, settings, fit.models);
   fit.warnings = missed_mode_warnings(fit.models, missed);
   fit.notes = missed_mode_notes(fit.models, missed);
-  for (std::string& w : runs_disagree_warnings(fit.models)) fit.warnings.push_back(std::move(w));
+  if (settings.runs > 1)
+    for (std::string& w : runs_disagree_warnings(fit.models)) fit.warnings.push_back(std::move(w));
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
   // One task per order, each writing its own slot: the same bits at any thread count (docs/method.md, "Determinism").
   std::vector<std::size_t> orders(fit.models.size());
