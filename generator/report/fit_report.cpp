@@ -198,7 +198,11 @@ std::string provenance(const FitRecord& fit) {
                      ? fmt::format("Q0–{} × S0–{}", s.qmax, s.smax)
                      : fmt::format("Q0–{} × S0–{}, grown around the selection: {}", s.qmax, s.smax,
                                    escape_xml(fmt::format("{}", fmt::join(fit.grid->steps, "; "))))},
-      {"sampler", fmt::format("{}; {} live points, seed {}, Δln Z {} , slices {}", escape_xml(s.sampler.method), s.live,
+      {"sampler", fmt::format("{}; {} live points{}, seed {}, Δln Z {} , slices {}", escape_xml(s.sampler.method), s.live,
+                              s.sampler.runs.value_or(1) > 1
+                                  ? fmt::format(" in {} independent runs per order (error from their scatter)",
+                                                *s.sampler.runs)
+                                  : std::string(),
                               s.seed, escape_xml(json_number(s.sampler.dlogz)),
                               s.sampler.slices ? std::to_string(*s.sampler.slices) : std::string("3 + dim"))},
       {"priors", fmt::format("{}{}", escape_xml(s.priors_source), s.symmetry_reduced ? ", symmetry-reduced" : "")},
