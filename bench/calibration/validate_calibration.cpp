@@ -166,9 +166,9 @@ void print_recovery(const RecoverySettings& st, const std::vector<RecoveryCase>&
   std::string truths;
   for (const auto& t : st.truths) truths += (truths.empty() ? "" : ",") + t.name();
   fmt::print("Order recovery: truths {}, noise {} of rms|G|, {} data sets per cell, grid {} ({} pts), fitted "
-             "Q0-{} x S0-{}, {} live points, rule {}, seed {}, design {}\n",
+             "Q0-{} x S0-{}, {} live points in {} run(s) per order, rule {}, seed {}, design {}\n",
              truths, noise,
-             st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.rule.spelling(), st.seed,
+             st.per_cell, st.grid.name, st.grid.points, st.qmax, st.smax, st.live, st.runs, st.rule.spelling(), st.seed,
              st.design == RecoveryDesign::distinct
                  ? fmt::format("distinct (natural frequencies a factor >= {:g} apart, pair quality >= {:g}, every term "
                                ">= {:g} of ||G||)",
@@ -267,6 +267,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   std::string select = rec.rule.spelling();
   app.add_option("--select", select, "order recovery: selection rule, as fit's --select")->capture_default_str();
+  app.add_option("--runs", rec.runs, "order recovery: independent runs per order, as fit's --runs")
+      ->check(CLI::Range(1, 64))->capture_default_str();
   std::string case_list;
   app.add_option("--cases", case_list, "order recovery: only these data sets (indices as in order_cases.csv; the "
                                        "other options must be those of the run that listed them)");

@@ -83,6 +83,7 @@ RecoveryCase run_case(const RecoverySettings& settings, int index, SamplerKind k
   fit.priors = priors;
   fit.priors_origin = "validation priors of " + settings.grid.name;
   fit.sampler.live = settings.live;
+  fit.runs = settings.runs;
   fit.sampler.seed = derive_seed(seed, 1);
   fit.sampler_kind = kind;
   fit.rule = settings.rule;

@@ -57,6 +57,7 @@ struct RecoverySettings {
   Grid grid = tube_grid();
   int qmax = 3, smax = 3;    ///< the fitted grid
   int live = 100;
+  int runs = 1;              ///< independent runs per order (FitSettings::runs)
   std::vector<SamplerKind> samplers{SamplerKind::full};
   SelectionRule rule = FitSettings{}.rule;  ///< the fit's default unless set
   RecoveryDesign design = RecoveryDesign::prior;
