@@ -141,10 +141,6 @@ ModelResult run_order(const Measurement& data, const Order& order, const FitSett
   return result;
 }
 
-}  // namespace
-
-namespace {
-
 /// The runs `parts` of one order merged into one (inference/run_merge.hpp): live points, calls and times add up;
 /// the rest is the first part's. With `scatter` (a fit of independent runs, FitSettings::runs ≥ 2) the error
 /// of ln Z is their scatter where it exceeds √(H/n). Summaries are left to the caller.
