@@ -27,15 +27,15 @@ struct OrderName {
   }
 };
 
-/// The number of slices, or "3 + dim" when automatic (empty).
+/// The number of slices, or kAutomaticSlices when automatic (empty).
 struct Slices {
-  Json write(const std::optional<std::int64_t>& slices) const { return slices ? Json(*slices) : Json("3 + dim"); }
+  Json write(const std::optional<std::int64_t>& slices) const { return slices ? Json(*slices) : Json(kAutomaticSlices); }
   void read(const Field& f, std::optional<std::int64_t>& slices) const {
     slices.reset();
     if (!f.json().is_string()) {
       slices = f.integer();
-    } else if (f.text() != "3 + dim") {
-      f.fail("expected a number of slices or \"3 + dim\"");
+    } else if (f.text() != kAutomaticSlices) {
+      f.fail(fmt::format("expected a number of slices or \"{}\"", kAutomaticSlices));
     }
   }
 };

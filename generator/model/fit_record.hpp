@@ -37,13 +37,17 @@ struct FitInput {
   std::optional<std::array<double, 2>> band;  ///< null: the whole file
 };
 
+/// How fit.json and the report spell the automatic number of slices per replacement
+/// (NestedSettings::slices_per_replacement, inference/nested_sampler.hpp).
+inline constexpr const char* kAutomaticSlices = "3 + dim";
+
 struct FitSamplerSettings {
   std::string method;
   double dlogz = 0.0;
   std::int64_t max_iterations = 0;
   std::optional<std::int64_t> missed_mode_retries;  ///< absent in older fits
   std::optional<std::int64_t> runs;                 ///< independent runs per order; absent in older fits (one)
-  std::optional<std::int64_t> slices;               ///< empty: automatic ("3 + dim")
+  std::optional<std::int64_t> slices;               ///< empty: automatic (kAutomaticSlices)
   std::optional<std::string> residues;              ///< absent in older fits
 };
 

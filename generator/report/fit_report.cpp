@@ -204,7 +204,7 @@ std::string provenance(const FitRecord& fit) {
                                                 *s.sampler.runs)
                                   : std::string(),
                               s.seed, escape_xml(json_number(s.sampler.dlogz)),
-                              s.sampler.slices ? std::to_string(*s.sampler.slices) : std::string("3 + dim"))},
+                              s.sampler.slices ? std::to_string(*s.sampler.slices) : std::string(kAutomaticSlices))},
       {"priors", fmt::format("{}{}", escape_xml(s.priors_source), s.symmetry_reduced ? ", symmetry-reduced" : "")},
       {"likelihood", escape_xml(s.likelihood)},
       {"selection", escape_xml(s.select)},

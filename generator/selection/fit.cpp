@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "inference/comparison.hpp"
+#include "inference/pole_space.hpp"
 #include "inference/poles_sampler.hpp"
 #include "inference/run_merge.hpp"
 #include "model/multipole.hpp"
@@ -63,7 +64,7 @@ int part_live(int live) { return std::max(2, (live + 1) / 2); }
 /// Independent runs an order's first run is made of: settings.runs, or one where nothing is sampled (an order
 /// without poles under the pole sampler, whose evidence is the closed form).
 int first_run_parts(const Order& order, const FitSettings& settings) {
-  const bool analytic = order_sampler(settings) == SamplerKind::poles && order.q() + order.s() == 0;
+  const bool analytic = order_sampler(settings) == SamplerKind::poles && pole_count(order) == 0;
   return analytic ? 1 : std::max(settings.runs, 1);
 }
 
