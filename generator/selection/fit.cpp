@@ -9,6 +9,7 @@
 #include "inference/run_merge.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
+#include "selection/accuracy_stop.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/grid_growth.hpp"
 #include "selection/reduced_model.hpp"
@@ -517,34 +518,44 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
       for (std::size_t k = 0; k < tasks.size(); ++k)
         if (tasks[k].order == i) mine.push_back(&done[k]);
       results[i] = merged_with(results[i], mine, settings.runs > 1);
+      results[i].accuracy.reset();  // a new run: its passive estimate is made again (accuracy_stop.hpp)
       rounds[i] = round;
     }
   }
 }
 
-std::size_t select_order(const FitSettings& settings, const std::vector<ModelResult>& results) {
-  std::vector<double> log_z, error;
-  std::vector<int> buffers;
-  for (const auto& m : results) {
-    log_z.push_back(m.run.log_z);
-    error.push_back(m.run.log_z_error);
-    buffers.push_back(m.order.buffers());
-  }
-  return settings.rule.select(log_z, error, buffers);
-}
-
-/// Grows the fitted orders while the selected one lies on their edge (selection/grid_growth.hpp): runs the added
-/// orders (and the re-runs they call for) and keeps `grid`, `results` and `rounds` in Q-major order.
+/// Grows the fitted orders while the selected one lies on their edge and its passive estimate misses the accuracy
+/// target (selection/grid_growth.hpp, selection/accuracy_stop.hpp): runs the added orders (and the re-runs they
+/// call for), estimates their passive models, and keeps `grid`, `results` and `rounds` in Q-major order.
+/// `would_grow` is set when the target stopped a growth the evidence asked for.
 GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::vector<Order>& grid,
                      std::vector<ModelResult>& results, std::vector<int>& rounds, double first_round_passes,
-                     Progress& progress) {
+                     const passivity::LazyPassiveBound& bound, bool& would_grow, Progress& progress) {
   GridGrowth growth{settings.qmax, settings.smax, {}, {}};
   const int k = real_data_count(settings.data_count, data.size());
   const double budget = std::max(first_round_passes, kMinGrowthBudgetPasses);
   double spent = 0.0;
   for (;;) {
-    const auto step = next_grid_step(results, select_order(settings, results), settings, k,
-                                     static_cast<long>(data.size()), spent, budget, growth.edge);
+    estimate_passive(data, settings, results, bound);
+    const std::size_t selected = select_usable(settings, results);
+    auto step = next_grid_step(results, selected, settings, k, static_cast<long>(data.size()), spent, budget,
+                               growth.edge);
+    if (step && settings.max_buffers > 0) {
+      const auto over = [&](const Order& o) { return o.buffers() > settings.max_buffers; };
+      step->add.erase(std::remove_if(step->add.begin(), step->add.end(), over), step->add.end());
+      if (step->add.empty()) {
+        growth.edge = fmt::format("{} lies on the edge of the fitted orders and the evidence still rises, but the "
+                                  "next orders exceed the budget of {} buffers per node ({})",
+                                  results[selected].order.name(), settings.max_buffers, setting("max_buffers"));
+        step.reset();
+      }
+    }
+    const auto& accuracy = results[selected].accuracy;
+    if (accuracy && accuracy->meets) {
+      would_grow = step.has_value() || !growth.edge.empty();
+      growth.edge.clear();  // the target is met: larger orders are a note, not a warning
+      return growth;
+    }
     if (!step) return growth;
     progress.message(step->reason);
     growth.steps.push_back(step->reason);
@@ -612,8 +623,11 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   rerun_missed_modes(data, settings, grid, results, rounds, progress);
 
   FitResult fit;
-  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_passes, progress);
-  fit.selected = select_order(settings, results);
+  const passivity::LazyPassiveBound bound(data);
+  bool would_grow = false;
+  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_passes, bound, would_grow, progress);
+  estimate_passive(data, settings, results, bound);
+  fit.selected = select_usable(settings, results);
   fit.models = std::move(results);
   const std::vector<MissedMode> missed = missed_modes(data, settings, fit.models);
   fit.warnings = missed_mode_warnings(fit.models, missed);
@@ -621,17 +635,9 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   if (settings.runs > 1)
     for (std::string& w : runs_disagree_warnings(fit.models)) fit.warnings.push_back(std::move(w));
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
-  // One task per order, each writing its own slot: the same bits at any thread count (docs/method.md, "Determinism").
-  std::vector<std::size_t> orders(fit.models.size());
-  std::iota(orders.begin(), orders.end(), std::size_t{0});
-  std::stable_sort(orders.begin(), orders.end(),
-                   [&](auto a, auto b) { return fit.models[a].order.dim() > fit.models[b].order.dim(); });
-  const passivity::LazyPassiveBound bound(data);
-  run_in_parallel(orders, settings.threads, [&](std::size_t i) {
-    auto& m = fit.models[i];
-    m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
-                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound);
-  });
+  if (auto note = target_met_note(data, settings, fit.models, fit.selected, would_grow); !note.empty())
+    fit.notes.push_back(std::move(note));
+  if (auto w = target_missed_warning(settings, fit.models, fit.selected); !w.empty()) fit.warnings.push_back(std::move(w));
   if (const auto w = passivity::passivity_cost_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
       !w.empty())
     fit.warnings.push_back(w);
