@@ -71,13 +71,21 @@ std::string target_missed_warning(const FitSettings& settings, const std::vector
   const ModelResult& sel = models[selected];
   if (!sel.accuracy) return {};
   const OrderAccuracy& a = *sel.accuracy;
-  return fmt::format(
+  const std::string missed = fmt::format(
       "no fitted order meets the accuracy target ({}): the selected {} misses it most in the {:.0f} Hz band (|Δα| = "
-      "{:.3f}, relative RMS {:.3g}), where the data hold a feature at {:.0f} Hz about {:.0f} Hz wide that the model "
-      "does not follow (a narrow peak of the data needs a pole pair of its own: allow larger orders, {} or {}, or "
-      "relax {})",
-      settings.target.describe(), sel.order.name(), a.worst_band_hz, a.max_band_delta_alpha, a.relative_rms,
-      a.peak_hz, a.peak_width_hz, setting("max_buffers"), setting("grid_growth"), setting("target.max_band_delta_alpha"));
+      "{:.3f}, relative RMS {:.3g})", settings.target.describe(), sel.order.name(), a.worst_band_hz,
+      a.max_band_delta_alpha, a.relative_rms);
+  // A spike of at most kSpikePoints points is narrower than any pole pair the data can resolve: an artefact of the
+  // measurement more likely than a feature of the material.
+  constexpr int kSpikePoints = 3;
+  if (a.peak_points <= kSpikePoints)
+    return fmt::format("{}, where the data hold a spike at {:.6g} Hz {} point(s) wide that no smooth model follows (a "
+                       "measurement artefact, or a resonance narrower than the frequency step): check the data there, "
+                       "or leave it out ({})", missed, a.peak_hz, a.peak_points, setting("band"));
+  return fmt::format("{}, where the data hold a feature at {:.6g} Hz about {:.3g} Hz wide that the model does not "
+                     "follow (it needs a pole pair of its own: allow larger orders, {} or {}, or relax {})",
+                     missed, a.peak_hz, a.peak_width_hz, setting("max_buffers"), setting("grid_growth"),
+                     setting("target.max_band_delta_alpha"));
 }
 
 }  // namespace admitgen

@@ -74,6 +74,7 @@ OrderAccuracy order_accuracy(const Measurement& data, const Order& order, const 
       while (hi + 1 < data.size() && r(hi + 1) > 0.5 * r(peak)) ++hi;
       out.peak_hz = data.f_hz(peak);
       out.peak_width_hz = data.f_hz(hi) - data.f_hz(lo);
+      out.peak_points = static_cast<int>(hi - lo + 1);
     }
   }
   out.meets = out.max_band_delta_alpha <= target.max_band_delta_alpha &&

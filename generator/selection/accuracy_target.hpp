@@ -44,6 +44,7 @@ struct OrderAccuracy {
   /// Inside the worst band: the frequency where |D − G| peaks, and the width of that peak (where |D − G| stays
   /// above half its peak, in Hz): what the model misses there, e.g. a narrow spike of the data.
   double peak_hz = 0.0, peak_width_hz = 0.0;
+  int peak_points = 0;  ///< data points of that peak
   bool meets = false;
 };
 
