@@ -296,8 +296,8 @@ void assign_numerators(const Eigen::VectorXd& x, int taps, DiscreteModel& out) {
   }
 }
 
-/// Constraint grid (Hz) for Re H ≥ margin: θ = 0 and π, 160 log-spaced from 1e-5 fs and 63 linear up to
-/// Nyquist (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss),
+/// Constraint grid (Hz) for Re H ≥ margin: θ = 0 and π, 160 log-spaced from 1e-5 fs, 63 linear up to
+/// Nyquist and 21 approaching it (Re H varies on the scale of the poles, which these resolve; the certifier adds what they miss),
 /// and the points across each pair's resonance (model/passivity.hpp, resonance_points) at f_p = arg(z)/2π · fs
 /// with half width −ln|z|/2π · fs (a narrow pair, α ≪ β, is otherwise stepped over).
 std::vector<double> passive_grid_hz(const DiscreteModel& m) {
@@ -305,6 +305,9 @@ std::vector<double> passive_grid_hz(const DiscreteModel& m) {
   std::vector<double> grid{0.0, 0.5 * fs_hz};
   for (int i = 0; i < 160; ++i) grid.push_back(1e-5 * fs_hz * std::pow(0.5 / 1e-5, i / 159.0));
   for (int i = 1; i < 64; ++i) grid.push_back(0.5 * fs_hz * i / 64.0);
+  // Towards Nyquist, 4 points per decade of the distance to it down to 1e-7 of fs/2 (the discrete certificate's
+  // net reaches as close: checks/passivity.hpp); FIR taps bend Re H there faster than the linear points follow.
+  for (int k = 8; k <= 28; ++k) grid.push_back(0.5 * fs_hz * (1.0 - std::pow(10.0, -k / 4.0)));
   for (const PairTerm& p : m.pair) {
     const cplx z(1.0 + p.e_r, p.p_i);
     const double centre = std::abs(std::arg(z)) * fs_hz / (2.0 * kPi), half = -std::log(std::abs(z)) * fs_hz / (2.0 * kPi);

@@ -135,6 +135,9 @@ void fields(V& v, FitPassiveEstimate& e) {
   v("pole_search_steps", e.pole_search_steps);
   v("passivity_cost", e.passivity_cost);
   v("passive_bound_relative_rms_residual", e.passive_bound_relative_rms_residual);
+  v("conditioning", e.conditioning);
+  v("best_sample_conditioning", e.best_sample_conditioning);
+  v("conditioning_tradeoff", e.conditioning_tradeoff, kPlain);
 }
 
 template <class V>

@@ -94,6 +94,11 @@ struct FitPassiveEstimate {
   /// With passivity_cost: the relative RMS residual of the best passive fit of any order (docs/passivity.md,
   /// "The passive bound"); absent in older fits.
   std::optional<double> passive_bound_relative_rms_residual;
+  /// term_conditioning of the estimate and of the best sample over the data (docs/passivity.md,
+  /// "Conditioning"); absent in older fits.
+  std::optional<double> conditioning, best_sample_conditioning;
+  /// Why an estimate of conditioning above 10 was kept (the trade-off against the residual); absent otherwise.
+  std::optional<std::string> conditioning_tradeoff;
 };
 
 struct FitGoodness {

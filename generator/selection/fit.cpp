@@ -630,9 +630,13 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   run_in_parallel(orders, settings.threads, [&](std::size_t i) {
     auto& m = fit.models[i];
     m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
-                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound);
+                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound,
+                                            settings.priors.admittance_scale);
   });
   if (const auto w = passivity::passivity_cost_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
+      !w.empty())
+    fit.warnings.push_back(w);
+  if (const auto w = passivity::conditioning_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
       !w.empty())
     fit.warnings.push_back(w);
   if (const auto d = passivity::data_passivity(data); d.negative_points > 0)

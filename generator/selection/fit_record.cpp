@@ -77,7 +77,8 @@ FitPassiveEstimate passive_record(const ModelResult& m) {
   FitPassiveEstimate r;
   r.poles_from = e.poles_searched ? passivity::PassiveEstimate::kPolesSearched : passivity::PassiveEstimate::kPolesFrom;
   r.sample_rank = e.candidate_rank;
-  r.residues = e.changed ? "refitted: least squares to the data subject to Re G >= 0 at every frequency"
+  r.residues = e.changed ? "refitted: least squares to the data under the Gaussian residue prior (MAP) subject to Re G >= 0 at "
+                           "every frequency"
                          : "those of the sample (already passive)";
   const auto names = m.order.parameter_names();
   for (std::size_t i = 0; i < names.size(); ++i) r.parameters.emplace_back(names[i], e.theta[static_cast<Eigen::Index>(i)]);
@@ -94,6 +95,9 @@ FitPassiveEstimate passive_record(const ModelResult& m) {
   }
   if (!e.cost_reason.empty()) r.passivity_cost = e.cost_reason;
   r.passive_bound_relative_rms_residual = e.passive_bound_relative_rms_residual;
+  r.conditioning = e.conditioning;
+  r.best_sample_conditioning = e.best_sample_conditioning;
+  if (!e.conditioning_tradeoff.empty()) r.conditioning_tradeoff = e.conditioning_tradeoff;
   return r;
 }
 
