@@ -29,7 +29,7 @@ std::pair<double, double> max_deviation(const MultipoleSurface& model, const Dis
 /// N of the file comment.
 double noise_floor(const DiscreteModel& h, const FixedCoefficients* fixed) {
   const double lsb_state = fixed ? std::ldexp(1.0, -31) : std::ldexp(1.0, -23);
-  const double lsb_out = fixed ? std::ldexp(1.0, fixed->out_shift - fixed->bits) : std::ldexp(1.0, -23);
+  const double lsb_out = fixed ? std::ldexp(1.0, fixed->out_shift - data_bits(fixed->format)) : std::ldexp(1.0, -23);
   double gain = 0.0;
   for (const auto& r : h.real) gain += std::abs(r.c) / r.eps;
   for (const auto& p : h.pair) {

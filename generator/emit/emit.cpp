@@ -126,6 +126,11 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
   } else {
     source = codegen::read_emission_source(fit, fit_path, settings);
   }
+  return emit(std::move(source), std::move(settings), template_text, header_file_name);
+}
+
+EmitResult emit(codegen::EmissionSource source, codegen::EmitSettings settings, const std::string& template_text,
+                const std::string& header_file_name) {
   if (settings.enforce_passivity) {
     enforce_continuous_passivity(source);
     settings.passivity_violations = discrete_passivity_violations;
@@ -162,10 +167,12 @@ std::string EmitResult::refusal(const std::string& out) const {
   else if (has("headroom") || has("limit_cycle"))
     next = "fixed-point range: try " + setting("format", "q31") + " (or f32) instead of q15";
   else if (has("fidelity"))
-    next = fmt::format("the coefficients as stored do not reproduce the model within {}: try {} (or f32), a higher {}, "
-                       "or a smaller order with {} (fit.json's conditioning of each order says which rounds best)",
-                       setting("fidelity_tolerance"), setting("format", "q31"), setting("fir_taps", "1..8"),
-                       setting("order"));
+    next = fmt::format("the filter as stored is further from its model than {} (the header's fidelity line says where): "
+                       "a higher {} when the deviation sits near the band's top (the discretisation), {} or f32 when it "
+                       "is rounding, a smaller {} when the model is ill-conditioned (fit.json's conditioning of each "
+                       "order), or a looser {} if that accuracy is enough",
+                       setting("fidelity_tolerance"), setting("fs_hz"), setting("format", "q31"), setting("order"),
+                       setting("fidelity_tolerance"));
   else
     next = "re-run admitgen emit; if it persists, report it with the fit.json";
   return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}", out,
