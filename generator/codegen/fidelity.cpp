@@ -12,18 +12,27 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Max of |H − G|/|G| over log-spaced f in [lo, hi] (n points), and where.
-std::pair<double, double> max_deviation(const MultipoleSurface& model, const DiscreteModel& h, double lo, double hi,
-                                        int n) {
+/// n log-spaced frequencies over [lo, hi] (n ≥ 2).
+Eigen::ArrayXd log_frequencies(double lo, double hi, int n) {
   Eigen::ArrayXd f(n);
-  for (int i = 0; i < n; ++i) f[i] = n == 1 ? lo : lo * std::pow(hi / lo, double(i) / (n - 1));
+  for (int i = 0; i < n; ++i) f[i] = lo * std::pow(hi / lo, double(i) / (n - 1));
+  return f;
+}
+
+/// H at f and the max of |H − G|/|G| there, with where.
+struct Deviation {
+  Eigen::ArrayXcd h;
+  double max = 0.0, at = 0.0;
+};
+Deviation deviation(const MultipoleSurface& model, const DiscreteModel& emitted, const Eigen::ArrayXd& f) {
   const Eigen::ArrayXcd g = evaluate_multipole(model.order, model.theta, 2.0 * kPi * f);
-  double worst = 0.0, at = lo;
-  for (int i = 0; i < n; ++i) {
-    const double d = std::abs(h.response(f[i]) - g[i]) / std::max(std::abs(g[i]), 1e-300);
-    if (d > worst) worst = d, at = f[i];
+  Deviation d{Eigen::ArrayXcd(f.size()), 0.0, f.size() > 0 ? f[0] : 0.0};
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    d.h[i] = emitted.response(f[i]);
+    const double r = std::abs(d.h[i] - g[i]) / std::max(std::abs(g[i]), 1e-300);
+    if (r > d.max) d.max = r, d.at = f[i];
   }
-  return {worst, at};
+  return d;
 }
 
 /// N of the file comment.
@@ -53,16 +62,20 @@ Fidelity fidelity(const MultipoleSurface& model, const DiscreteModel& emitted, c
     for (auto& p : h.pair) p.c *= k;
   }
   Fidelity out;
-  std::tie(out.max_rel_deviation, out.at_hz) = max_deviation(model, h, f_lo, f_hi, kFidelityPoints);
-  if (const double top = 0.45 * h.fs_hz; top > f_hi)
-    std::tie(out.max_rel_deviation_above, out.above_at_hz) = max_deviation(model, h, f_hi, top, kFidelityPoints / 4);
-  out.noise_floor = noise_floor(h, fixed);
-  out.min_snr_db = INFINITY;
-  for (int i = 0; i < kFidelityPoints; ++i) {
-    const double f = f_lo * std::pow(f_hi / f_lo, double(i) / (kFidelityPoints - 1));
-    const double snr = 20.0 * std::log10(std::abs(h.response(f)) / out.noise_floor);
-    if (snr < out.min_snr_db) out.min_snr_db = snr, out.snr_at_hz = f;
+  const Eigen::ArrayXd band = log_frequencies(f_lo, f_hi, kFidelityPoints);
+  const Deviation in_band = deviation(model, h, band);
+  out.max_rel_deviation = in_band.max;
+  out.at_hz = in_band.at;
+  if (const double top = 0.45 * h.fs_hz; top > f_hi) {
+    const Deviation above = deviation(model, h, log_frequencies(f_hi, top, kFidelityPoints / 4));
+    out.max_rel_deviation_above = above.max;
+    out.above_at_hz = above.at;
   }
+  out.noise_floor = noise_floor(h, fixed);
+  Eigen::Index weakest = 0;
+  const double h_min = in_band.h.abs().minCoeff(&weakest);
+  out.min_snr_db = 20.0 * std::log10(h_min / out.noise_floor);
+  out.snr_at_hz = band[weakest];
   return out;
 }
 

@@ -99,6 +99,9 @@ std::pair<double, double> minimum_on(const RealPartFn& re, double lo, double hi)
   return {best_w, best};
 }
 
+/// Whether a Hamiltonian eigenvalue counts as a crossing candidate: |Re λ| ≤ kImagTolerance |λ|.
+bool near_axis(std::complex<double> l) { return std::abs(l.real()) <= kImagTolerance * std::abs(l); }
+
 /// Hamiltonian eigenvalues of ss (R = 2D, or the reciprocal / ε-shifted realisation when D vanishes), mapped
 /// to the s-plane of G (Im ≥ 0), and the crossing candidates among them (|Re λ| ≤ kImagTolerance |λ|).
 struct Spectrum {
@@ -128,7 +131,7 @@ Spectrum spectrum(const StateSpace& ss, double scale, std::string& method) {
     out.eigenvalues = hamiltonian_eigenvalues(shifted);
   }
   for (const auto l : out.eigenvalues)
-    if (std::abs(l.real()) <= kImagTolerance * std::abs(l) + 1e-14 && l.imag() > 0.0) out.crossings.push_back(l.imag());
+    if (near_axis(l) && l.imag() > 0.0) out.crossings.push_back(l.imag());
   std::sort(out.crossings.begin(), out.crossings.end());
   return out;
 }
@@ -306,7 +309,7 @@ std::vector<std::complex<double>> hamiltonian_eigenvalues(const StateSpace& ss) 
 std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
   std::vector<double> out;
   for (const auto l : hamiltonian_eigenvalues(ss))
-    if (std::abs(l.real()) <= kImagTolerance * std::abs(l) + 1e-14 * std::abs(l)) out.push_back(l.imag());
+    if (near_axis(l)) out.push_back(l.imag());
   std::sort(out.begin(), out.end());
   return out;
 }
