@@ -94,6 +94,18 @@ FixedCoefficients::Pair quantise_pole(const PairTerm& p, int b) {
   t.e_r = round_to_int(std::ldexp(p.e_r, b + t.shift), b);
   t.p_i = round_to_int(std::ldexp(p.p_i, b + t.shift), b);
   t.g = round_to_int(std::ldexp(p.g, b + t.shift), b);
+  // Each state's L1 norm is at most g/(1 − |π|), 1 in exact arithmetic (g = 1 − |π|), and reaches it when β = 0.
+  // Rounded independently, g can exceed the stored pole's 1 − |π| by a fraction of an LSB; a full-scale input
+  // then saturates the state (headroom). Where the stored pair's state L1 norm (state_l1) exceeds 1, g is lowered
+  // to the stored pole's 1 − |π| (rounded down), which bounds both norms by 1 (a relative gain change of the size
+  // of the excess, which the fidelity check measures).
+  const double s = std::ldexp(1.0, -(b + t.shift));
+  PairTerm stored;
+  stored.e_r = t.e_r * s, stored.p_i = t.p_i * s, stored.g = t.g * s;
+  if (const auto [xi, eta] = state_l1(stored); std::max(xi, eta) > 1.0) {
+    const double room = 1.0 - std::hypot(1.0 + stored.e_r, stored.p_i);
+    t.g = std::min<std::int32_t>(t.g, static_cast<std::int32_t>(std::floor(std::ldexp(room, b + t.shift))));
+  }
   return t;
 }
 

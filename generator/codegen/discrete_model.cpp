@@ -139,6 +139,23 @@ bool DiscreteModel::stable() const {
          std::all_of(pair.begin(), pair.end(), [](const PairTerm& p) { return inside_unit_circle(p); });
 }
 
+std::pair<double, double> state_l1(const PairTerm& p) {
+  constexpr long kMaxTerms = 1L << 22;
+  const std::complex<double> pi(1.0 + p.e_r, p.p_i);
+  const double r = std::abs(pi);
+  if (!(r < 1.0)) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double xi = 0.0, eta = 0.0, tail = 0.0;
+  std::complex<double> psi(p.g, 0.0);
+  for (long n = 0; n < kMaxTerms; ++n) {
+    xi += std::abs(psi.real());
+    eta += std::abs(psi.imag());
+    psi *= pi;
+    tail = std::abs(psi) / (1.0 - r);
+    if (tail < 1e-13) break;
+  }
+  return {xi + tail, eta + tail};
+}
+
 double DiscreteModel::l1_norm() const {
   if (!stable()) return std::numeric_limits<double>::infinity();
   const auto h = impulse_response(tail_samples(12.0));
