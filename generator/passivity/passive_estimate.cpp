@@ -165,8 +165,9 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
     // and the pole search from them; the most likely certified one within kMaxConditioning is taken when it fits
     // within kConditioningCost of the estimate's residual, else the trade-off is stated.
     const double rms = rel_rms(best.theta);
+    const int samples = std::min(std::max(starts, 1), n);
     std::optional<PassiveEstimate> well;
-    for (int k = 0; k < std::min(std::max(starts, 1), n); ++k) {
+    for (int k = 0; k < samples; ++k) {
       const PassiveEstimate map =
           from_sample(order, candidates[static_cast<std::size_t>(k)], k, target, likelihood, false);
       for (const PassiveEstimate& e : {map, starts > 0 ? searched(order, map, target, likelihood) : map})
@@ -183,7 +184,7 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
                              PassiveEstimate::kConditioningCost)
                : fmt::format("no certified estimate within conditioning {:g} was found from the {} best samples: emit "
                              "uses this one",
-                             PassiveEstimate::kMaxConditioning, std::min(std::max(starts, 1), n));
+                             PassiveEstimate::kMaxConditioning, samples);
     }
   }
   best.best_sample_log_likelihood = likelihood(candidates.front().data());
