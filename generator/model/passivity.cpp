@@ -174,13 +174,21 @@ std::vector<double> sample_points(const Spectrum& sp, const std::vector<FeatureW
 /// eigenvalues leaves the axis); the net catches bands that rounding hides from the eigenvalues entirely (where
 /// residues cancel by many orders of magnitude, |A| ~ 1e9 for |G| ~ 1e3: such a sample, certified before the
 /// net, had Re G = −1225 at 5359 Hz: tests/checks/test_passivity.cpp).
+/// Re G at many frequencies at once (the bulk of the decision's samples); empty: one call of the scalar one each.
+using RealPartsFn = std::function<std::vector<double>(const std::vector<double>& omega)>;
+
 PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi,
-                       const std::vector<FeatureWindow>& features, int net_per_decade = kNetPerDecade) {
+                       const std::vector<FeatureWindow>& features, int net_per_decade = kNetPerDecade,
+                       const RealPartsFn& res = {}) {
   PassivityResult r;
   const Spectrum sp = spectrum(ss, scale, r.method);
   std::vector<double> w = sample_points(sp, features, lo, hi, net_per_decade);
-  std::vector<double> v(w.size());
-  for (std::size_t i = 0; i < w.size(); ++i) v[i] = re(w[i]);
+  std::vector<double> v;
+  if (res) {
+    v = res(w);
+  } else {
+    for (const double x : w) v.push_back(re(x));
+  }
   // Refine every interior local minimum that is not already negative: a dip narrower than the spacing.
   std::vector<std::pair<double, double>> refined;
   for (std::size_t i = 1; i + 1 < w.size(); ++i)
@@ -241,6 +249,13 @@ double model_scale(const StateSpace& ss, const RealPartFn& re, double lo, double
   double s = std::max(std::abs(ss.D), std::abs(dc_gain(ss)));
   for (int i = 0; i <= 64; ++i) s = std::max(s, std::abs(re(lo * std::pow(hi / lo, i / 64.0))));
   return s > 0.0 ? s : 1.0;
+}
+
+/// Re G of a multipole at every ω of `omega` (one vectorised pass per term).
+std::vector<double> re_multipole_at(const Order& order, const double* theta, const std::vector<double>& omega) {
+  Eigen::ArrayXd re, im;
+  evaluate_multipole(order, theta, Eigen::Map<const Eigen::ArrayXd>(omega.data(), Eigen::Index(omega.size())), re, im);
+  return {re.data(), re.data() + re.size()};
 }
 
 double re_multipole(const Order& order, const double* theta, double omega) {
@@ -340,7 +355,8 @@ PassivityResult continuous_passivity(const Order& order, const double* theta) {
   } else {
     const auto [lo, hi] = pole_range(order, theta);
     ADMITGEN_ENSURE(lo > 0.0, "continuous passivity needs a causal model (every lambda, alpha > 0)");
-    r = decide(ss, re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi, resonance_windows(order, theta));
+    r = decide(ss, re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi, resonance_windows(order, theta),
+               kNetPerDecade, [&](const std::vector<double>& w) { return re_multipole_at(order, theta, w); });
   }
   const auto hz = [](double w) { return w / (2.0 * kPi); };
   for (auto& c : r.crossings) c = hz(c);
