@@ -2,13 +2,14 @@
 # admitgen_add_boundary(<target>
 #     FIT <fit.json> FS <hz> [<hz>...] FORMAT <f32|q31|q15>
 #     [NAME <c-identifier>] [ORDER <QxSy>] [ESTIMATE passive|mean|max_likelihood] [FIR_TAPS <n>]
-#     [BANDS_JSON <file>] [ALLOW_UNSAFE] [NO_PASSIVITY_ENFORCEMENT])
+#     [BANDS_JSON <file>] [FIDELITY_TOLERANCE <x>] [ALLOW_UNSAFE] [NO_PASSIVITY_ENFORCEMENT])
 #
 # Runs `admitgen emit` at build time and creates an INTERFACE library <target> that provides the
 # generated header <NAME>.h (NAME defaults to <target>) and links the C99 runtime (admitgen::runtime).
 # The header is regenerated when the fit, the admitgen executable or the header template change.
 # Sets the target property ADMITGEN_HEADER to the header's path. emit refuses a filter that fails
 # `admitgen check` (the build then fails); ALLOW_UNSAFE passes --allow-unsafe (say why next to it).
+# FIDELITY_TOLERANCE passes --fidelity-tolerance (the largest deviation of the filter from its model in band).
 # NO_PASSIVITY_ENFORCEMENT passes --no-passivity-enforcement (emit the estimate exactly as fitted; for
 # demonstrations of what a non-passive wall does).
 #
@@ -22,7 +23,7 @@ endif()
 set(ADMITGEN_TEMPLATE_FILE "${ADMITGEN_TEMPLATE_FILE}" CACHE INTERNAL "admitgen header template")
 
 function(admitgen_add_boundary target)
-  cmake_parse_arguments(ARG "ALLOW_UNSAFE;NO_PASSIVITY_ENFORCEMENT" "FIT;FORMAT;NAME;ORDER;ESTIMATE;FIR_TAPS;BANDS_JSON" "FS" ${ARGN})
+  cmake_parse_arguments(ARG "ALLOW_UNSAFE;NO_PASSIVITY_ENFORCEMENT" "FIT;FORMAT;NAME;ORDER;ESTIMATE;FIR_TAPS;BANDS_JSON;FIDELITY_TOLERANCE" "FS" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "admitgen_add_boundary(${target}): unknown arguments ${ARG_UNPARSED_ARGUMENTS}")
   endif()
@@ -61,6 +62,9 @@ function(admitgen_add_boundary target)
   endif()
   if(ARG_FIR_TAPS)
     list(APPEND args --fir-taps ${ARG_FIR_TAPS})
+  endif()
+  if(ARG_FIDELITY_TOLERANCE)
+    list(APPEND args --fidelity-tolerance ${ARG_FIDELITY_TOLERANCE})
   endif()
   if(ARG_NO_PASSIVITY_ENFORCEMENT)
     list(APPEND args --no-passivity-enforcement)

@@ -11,6 +11,9 @@
 ///                        64-bit accumulator bounds (q31/q15)
 ///  limit_cycle           zero input after full-scale states reaches exactly 0 (the runtime's own kernels,
 ///                        codegen/runtime_filter.hpp) — no limit cycle, no deadband
+///  fidelity              the emitted coefficients, as the kernel runs them, within the tolerance of the header's
+///                        continuous model in the data band, and a full-scale tone's output above the kernel's
+///                        rounding noise by 20 dB (codegen/fidelity.hpp)
 ///  header_integrity      the C tables and model structs equal the machine-readable block
 #pragma once
 
@@ -32,6 +35,7 @@ struct CheckSubject {
   std::optional<codegen::EmittedHeader> header;  ///< headers only
   std::string header_text;                       ///< headers only
   std::string note;  ///< e.g. which estimate was checked when the requested one is absent
+  double fidelity_tolerance = codegen::kDefaultFidelityTolerance;  ///< `--fidelity-tolerance`
 };
 
 /// From an emitted header: its model block as read (io::read_emitted_header) and its text, whose C tables
@@ -48,6 +52,7 @@ CheckResult check_continuous_passivity(const CheckSubject& subject);
 CheckResult check_discrete_passivity(const CheckSubject& subject);
 CheckResult check_headroom(const CheckSubject& subject);
 CheckResult check_limit_cycles(const CheckSubject& subject);
+CheckResult check_fidelity(const CheckSubject& subject);
 CheckResult check_header_integrity(const CheckSubject& subject);
 
 /// Every check, in the order above (header_integrity last).

@@ -123,13 +123,15 @@ CheckResult check_header_integrity(const CheckSubject& s) {
   const auto& h = *s.header;
   const bool f32 = h.format == codegen::Format::f32;
   const std::string fmt_name = codegen::format_name(h.format);
-  const std::string ctype = f32 ? "float" : h.format == codegen::Format::q31 ? "int32_t" : "int16_t";
+  const bool wide = !h.rates.empty() && h.rates.front().fixed && h.rates.front().fixed->wide();
+  const std::string ctype = codegen::table_ctype(h.format, wide);
   std::size_t values = 0;
   for (const auto& rate : h.rates) {
     const std::string base = fmt::format("{}_{}", h.name, rate.fs_hz);
     const auto& m = rate.model;
     const Tables t = f32 ? tables(codegen::RuntimeModelF32(codegen::to_float(m), rate.fs_hz))
-                     : h.format == codegen::Format::q31 ? tables(codegen::RuntimeModelQ31(*rate.fixed, rate.fs_hz))
+                     : h.format == codegen::Format::q31 || rate.fixed->wide()
+                         ? tables(codegen::RuntimeModelQ31(*rate.fixed, rate.fs_hz))
                                                         : tables(codegen::RuntimeModelQ15(*rate.fixed, rate.fs_hz));
     const auto& [fir, real, pair] = t;
     compare(r, s.header_text, ctype, base + "_fir", true, fir, f32, 0, fir.size());

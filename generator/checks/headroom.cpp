@@ -10,30 +10,6 @@
 #include <limits>
 
 namespace admitgen::checks {
-namespace {
-
-/// Samples summed explicitly before the geometric tail bound takes over.
-constexpr long kMaxTerms = 1L << 22;
-
-/// Upper bounds of ‖ξ‖₁ and ‖η‖₁ for ψ_n = πⁿ g (the pair's state impulse response): explicit sum over
-/// n < N plus the tail bound g rᴺ/(1 − r), N where that tail is below 1e-13 (or kMaxTerms).
-std::pair<double, double> pair_state_l1(const codegen::PairTerm& p) {
-  const std::complex<double> pi(1.0 + p.e_r, p.p_i);
-  const double r = std::abs(pi);
-  if (!(r < 1.0)) return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  double xi = 0.0, eta = 0.0, tail = 0.0;
-  std::complex<double> psi(p.g, 0.0);
-  for (long n = 0; n < kMaxTerms; ++n) {
-    xi += std::abs(psi.real());
-    eta += std::abs(psi.imag());
-    psi *= pi;
-    tail = std::abs(psi) / (1.0 - r);
-    if (tail < 1e-13) break;
-  }
-  return {xi + tail, eta + tail};
-}
-
-}  // namespace
 
 /// docs/physics.md §3.3: for |u| ≤ 1, |state| ≤ ‖h_state‖₁ (tight for the worst-case sign input), so each
 /// state needs ‖h_state‖₁ ≤ 1 (Q1.31 range [−1, 1)) and the output needs ‖h‖₁ ≤ 2^out_shift; the 64-bit
@@ -65,7 +41,7 @@ CheckResult check_headroom(const CheckSubject& s) {
                            term_location(rate.fs_hz, m, false, i), q.real[i].eps, q.bits));
     }
     for (std::size_t i = 0; i < m.pair.size(); ++i) {
-      const auto [xi, eta] = pair_state_l1(m.pair[i]);
+      const auto [xi, eta] = codegen::state_l1(m.pair[i]);
       state_max = std::max({state_max, xi, eta});
       if (!(std::max(xi, eta) <= 1.0))
         r.fail(fmt::format("{}: state L1 norms xi {:.9g}, eta {:.9g} exceed 1: a full-scale input saturates them",

@@ -10,8 +10,8 @@
 namespace admitgen::checks {
 
 /// Emitted discrete filter H(e^{j2πf/fs}); frequencies in Hz, a band reaching Nyquist has hi = fs/2.
-/// Requires every |z| < 1. `scan_minimum` false skips the dense scan that only feeds min_re/min_at
-/// outside the negative bands (the decision and the bands are the same; for certifiers in a loop).
+/// Requires every |z| < 1. Each pair's resonance is sampled densely (model/passivity.hpp, FeatureWindow);
+/// `scan_minimum` false uses the coarser net of a certifier in a loop (whose result is certified again).
 PassivityResult discrete_passivity(const codegen::DiscreteModel& model, bool scan_minimum = true);
 
 }  // namespace admitgen::checks

@@ -27,10 +27,14 @@ PassivityDetails details(PassivityResult p, double lo, double hi) {
   return d;
 }
 
+/// Fails r for every negative band, and for a model the test did not pass without naming a band (a minimum below
+/// 0 never passes: docs/passivity.md, "What the certificate guarantees").
 void report_bands(CheckResult& r, const PassivityResult& p, const std::string& prefix, double lo, double hi) {
   for (const auto& b : p.bands)
     r.fail(fmt::format("{}Re G < 0 from {} to {} ({}), min Re G = {:.4g} at {}", prefix, hz(b.lo), hz(b.hi),
                        band_place_text(place(b, lo, hi)), b.min_re, hz(b.at)));
+  if (!p.passive && p.bands.empty())
+    r.fail(fmt::format("{}min Re G = {:.4g} at {} is below 0", prefix, p.min_re, hz(p.min_at)));
 }
 
 }  // namespace

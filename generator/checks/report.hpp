@@ -80,9 +80,24 @@ struct HeaderIntegrityDetails {
   std::size_t values_compared = 0;
 };
 
+/// fidelity at one rate (codegen/fidelity.hpp): the emitted filter against its continuous model.
+struct FidelityRate {
+  int fs_hz = 0;
+  double max_rel_deviation = 0.0, at_hz = 0.0;  ///< in the data band
+  double max_rel_deviation_above_band = 0.0;    ///< data band's top to 0.45 fs (reported, not judged)
+  double noise_floor = 0.0;                     ///< rounding bound at the output for |u| ≤ 1
+  double min_full_scale_snr_db = 0.0, snr_at_hz = 0.0;
+};
+struct FidelityDetails {
+  double tolerance = 0.0;  ///< of the in-band deviation
+  double min_full_scale_snr_db = 0.0;
+  std::vector<FidelityRate> rates;
+};
+
 /// The figures of one check; std::monostate when the check did not apply.
 using CheckDetails = std::variant<std::monostate, CausalityDetails, DiscreteStabilityDetails, PassivityDetails,
-                                  DiscretePassivityDetails, HeadroomDetails, LimitCycleDetails, HeaderIntegrityDetails>;
+                                  DiscretePassivityDetails, HeadroomDetails, LimitCycleDetails, HeaderIntegrityDetails,
+                                  FidelityDetails>;
 
 struct CheckResult {
   std::string name;     ///< stable identifier: causality, discrete_stability, passivity_continuous, ...

@@ -52,7 +52,7 @@ CheckReport run_checks(const CheckSubject& s) {
   r.kind = s.kind;
   r.checks = {check_causality(s),    check_discrete_stability(s), check_continuous_passivity(s),
               check_discrete_passivity(s), check_headroom(s),   check_limit_cycles(s),
-              check_header_integrity(s)};
+              check_fidelity(s),           check_header_integrity(s)};
   return r;
 }
 

@@ -5,6 +5,8 @@
 /// every check holds, 1 when one fails (each failure named), 2 on unusable input.
 #pragma once
 
+#include "codegen/fidelity.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -16,6 +18,7 @@ struct CheckOptions {
   bool json = false;
   std::string order;              ///< fits only: check this order instead of the selected one
   std::string estimate = "passive";  ///< fits only: posterior summary taken as the parameters
+  double fidelity_tolerance = codegen::kDefaultFidelityTolerance;  ///< headers only (checks::CheckSubject)
 };
 
 void setup_check_command(CLI::App& app, int& exit_code);

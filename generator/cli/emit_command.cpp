@@ -64,6 +64,10 @@ void add_emit_options(CLI::App& app, codegen::EmitSettings& s) {
                     "posterior mean, or max_likelihood sample. A non-passive choice is made passive by the minimal "
                     "change of its residues, stated in the header")
       ->check(CLI::IsMember({"passive", "mean", "max_likelihood"}))->default_str(estimate_name(s.estimate));
+  sub->add_option("--fidelity-tolerance", s.fidelity_tolerance,
+                  "Largest max |H - G|/|G| in the data band of the emitted filter, as the kernel runs it, against the "
+                  "continuous model; a header beyond it is refused (docs/checks.md, fidelity)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("--fir-taps", s.fir_taps, "FIR taps of the refit (0 = fewest reaching 1e-5 relative error)")
       ->check(CLI::Range(0, 8))->capture_default_str();
   add_clearing_flag(*sub, "--no-passivity-enforcement", s.enforce_passivity,

@@ -24,16 +24,16 @@ namespace {
 /// The evidence and cost/accuracy table (docs/cli.md, "fit"): per order ln Z and its error, the Bayes factor
 /// against the selected order, the buffers it costs per node, and its passive estimate's accuracy
 /// (selection/accuracy_target.hpp: relative RMS residual, max |delta alpha| per one-third-octave band, whether it
-/// meets the target). The error of ln Z is sqrt(H/n) of one run: a lower bound of the seed scatter, said below.
+/// meets the target) and its conditioning (docs/passivity.md, "Conditioning"). The error of ln Z is sqrt(H/n) of one run: a lower bound of the seed scatter, said below.
 void print_summary(const FitResult& fit, const FitSettings& settings) {
   const auto& best = fit.models[fit.selected];
-  fmt::print("{:<6} {:>12} {:>8} {:>10} {:>11} {:>9} {:>8} {:>8} {:>9} {:>6}\n", "order", "ln Z", settings.runs < 2 ? "±≥err" : "± err", "BF [dB]",
-             "calls", "seconds", "buffers", "rel.rms", "band|Δα|", "target");
+  fmt::print("{:<6} {:>12} {:>8} {:>10} {:>11} {:>9} {:>8} {:>8} {:>9} {:>6} {:>6}\n", "order", "ln Z", settings.runs < 2 ? "±≥err" : "± err", "BF [dB]",
+             "calls", "seconds", "buffers", "rel.rms", "band|Δα|", "target", "cond.");
   for (const auto& m : fit.models) {
     const OrderAccuracy a = m.accuracy.value_or(OrderAccuracy{});
-    fmt::print("{:<6} {:>12.2f} {:>8.2f} {:>10.1f} {:>11} {:>9.2f} {:>8} {:>8.4f} {:>9.4f} {:>6}{}\n", m.order.name(),
+    fmt::print("{:<6} {:>12.2f} {:>8.2f} {:>10.1f} {:>11} {:>9.2f} {:>8} {:>8.4f} {:>9.4f} {:>6} {:>6.3g}{}\n", m.order.name(),
                m.run.log_z, m.run.log_z_error, deciban(m.run.log_z, best.run.log_z), m.run.calls, m.seconds,
-               m.order.buffers(), a.relative_rms, a.max_band_delta_alpha, a.meets ? "met" : "-",
+               m.order.buffers(), a.relative_rms, a.max_band_delta_alpha, a.meets ? "met" : "-", m.passive.conditioning,
                &m == &best ? "  <- selected" : "");
   }
   fmt::print("target: {} (the largest |Δα| of the passive estimate against the data in any one-third-octave band)\n",

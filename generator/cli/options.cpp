@@ -102,6 +102,7 @@ std::string flag_for(const std::string& key) {
       {"data_count", "--likelihood-k"},
       {"enforce_passivity = false", "--no-passivity-enforcement"},
       {"estimate", "--estimate"},
+      {"fidelity_tolerance", "--fidelity-tolerance"},
       {"fir_taps", "--fir-taps"},
       {"format", "--format"},
       {"format.skip_rows", "--skip-rows"},

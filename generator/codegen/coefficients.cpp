@@ -52,6 +52,22 @@ FloatCoefficients to_float(const DiscreteModel& m) {
   return f;
 }
 
+DiscreteModel as_emitted(const DiscreteModel& model, const FloatCoefficients& f) {
+  DiscreteModel m = model;
+  for (std::size_t k = 0; k < m.fir.size(); ++k) m.fir[k] = f.fir[k];
+  for (std::size_t q = 0; q < m.real.size(); ++q) {
+    m.real[q].eps = f.real[q][0];
+    m.real[q].c = f.real[q][1];
+  }
+  for (std::size_t s = 0; s < m.pair.size(); ++s) {  // {e_r, p_i, g, 2 Re c, −2 Im c}
+    m.pair[s].e_r = f.pair[s][0];
+    m.pair[s].p_i = f.pair[s][1];
+    m.pair[s].g = f.pair[s][2];
+    m.pair[s].c = {0.5 * f.pair[s][3], -0.5 * f.pair[s][4]};
+  }
+  return m;
+}
+
 namespace {
 
 /// Per-term exponent: the largest shift with the (sum of the n) mantissas inside 2^B minus rounding room.
@@ -78,6 +94,18 @@ FixedCoefficients::Pair quantise_pole(const PairTerm& p, int b) {
   t.e_r = round_to_int(std::ldexp(p.e_r, b + t.shift), b);
   t.p_i = round_to_int(std::ldexp(p.p_i, b + t.shift), b);
   t.g = round_to_int(std::ldexp(p.g, b + t.shift), b);
+  // Each state's L1 norm is at most g/(1 − |π|), 1 in exact arithmetic (g = 1 − |π|), and reaches it when β = 0.
+  // Rounded independently, g can exceed the stored pole's 1 − |π| by a fraction of an LSB; a full-scale input
+  // then saturates the state (headroom). Where the stored pair's state L1 norm (state_l1) exceeds 1, g is lowered
+  // to the stored pole's 1 − |π| (rounded down), which bounds both norms by 1 (a relative gain change of the size
+  // of the excess, which the fidelity check measures).
+  const double s = std::ldexp(1.0, -(b + t.shift));
+  PairTerm stored;
+  stored.e_r = t.e_r * s, stored.p_i = t.p_i * s, stored.g = t.g * s;
+  if (const auto [xi, eta] = state_l1(stored); std::max(xi, eta) > 1.0) {
+    const double room = 1.0 - std::hypot(1.0 + stored.e_r, stored.p_i);
+    t.g = std::min<std::int32_t>(t.g, static_cast<std::int32_t>(std::floor(std::ldexp(room, b + t.shift))));
+  }
   return t;
 }
 
@@ -88,9 +116,21 @@ void set_pair_rates(PairTerm& t, double fs_hz) {
 
 }  // namespace
 
-void store_poles(DiscreteModel& m, Format format) {
+int data_bits(Format format) { return format == Format::q15 ? 15 : 31; }
+
+double FixedCoefficients::output_gain() const {
+  return std::ldexp(1.0, bits + 31 - data_bits(format) + out_shift - y_exp - acc_shift);
+}
+
+int coefficient_bits(Format format, bool wide) { return format == Format::q15 && !wide ? 15 : 31; }
+
+const char* table_ctype(Format format, bool wide) {
+  return format == Format::f32 ? "float" : coefficient_bits(format, wide) == 31 ? "int32_t" : "int16_t";
+}
+
+void store_poles(DiscreteModel& m, Format format, bool wide) {
   const auto to_f = [](double v) { return static_cast<double>(static_cast<float>(v)); };
-  const int b = format == Format::q31 ? 31 : 15;
+  const int b = coefficient_bits(format, wide);
   for (auto& r : m.real) {
     if (format == Format::f32) {
       r.eps = to_f(r.eps);
@@ -112,11 +152,11 @@ void store_poles(DiscreteModel& m, Format format) {
   }
 }
 
-FixedCoefficients quantise(const DiscreteModel& m, Format format) {
+FixedCoefficients quantise(const DiscreteModel& m, Format format, bool wide) {
   ADMITGEN_ENSURE(format != Format::f32, "quantise() is for q31/q15");
   FixedCoefficients q;
   q.format = format;
-  q.bits = format == Format::q31 ? 31 : 15;
+  q.bits = coefficient_bits(format, wide);
   const int b = q.bits;
   const double full = std::ldexp(1.0, b);
 
@@ -149,7 +189,7 @@ FixedCoefficients quantise(const DiscreteModel& m, Format format) {
   q.l1_norm = q.dequantised(m.fs_hz).l1_norm();
   // 2^out_shift ≥ ‖h‖₁ (1 + 2^-10): the 2^-10 margin covers the state rounding (< 1 LSB per state).
   q.out_shift = std::max(0, static_cast<int>(std::ceil(std::log2(q.l1_norm * (1.0 + 1.0 / 1024.0)))));
-  q.acc_shift = 31 + q.out_shift - q.y_exp;
+  q.acc_shift = q.bits + 31 - data_bits(format) + q.out_shift - q.y_exp;
   ADMITGEN_ENSURE(q.acc_shift >= 1 && q.acc_shift <= 62, "output shift {} out of range", q.acc_shift);
   return q;
 }

@@ -26,6 +26,14 @@ enum class Format { f32, q31, q15 };
 Format parse_format(const std::string& text);
 const char* format_name(Format format);
 
+/// Mantissa fraction bits B of the coefficients of a fixed-point format: 31 (q31), 15 (q15), and 31 for q15 with
+/// 32-bit coefficients (`wide`: Q1.15 data, the q31 tables; docs/runtime.md, "Q formats and rounding").
+int coefficient_bits(Format format, bool wide = false);
+/// Fraction bits D of a fixed-point format's data: 31 (q31), 15 (q15).
+int data_bits(Format format);
+/// The C type of the emitted tables: float, int32_t (q31, wide q15) or int16_t (q15).
+const char* table_ctype(Format format, bool wide = false);
+
 /// The f32 tables: exactly the float values emitted (the double model rounded to nearest).
 struct FloatCoefficients {
   float h0 = 0.0f;
@@ -36,12 +44,16 @@ struct FloatCoefficients {
 
 FloatCoefficients to_float(const DiscreteModel& model);
 
+/// `model` with every coefficient replaced by the float the f32 tables hold: the filter the f32 kernel runs, in
+/// exact arithmetic (as FixedCoefficients::dequantised is for q31/q15).
+DiscreteModel as_emitted(const DiscreteModel& model, const FloatCoefficients& tables);
+
 struct FixedCoefficients {
   Format format = Format::q31;
   int bits = 31;        ///< B: mantissa fraction bits (31 or 15)
   int out_shift = 0;    ///< output represents y · 2^−out_shift
   int y_exp = 0;        ///< output-table exponent
-  int acc_shift = 0;    ///< R = 31 + out_shift − y_exp (the same for both formats)
+  int acc_shift = 0;    ///< R = B + 31 − D + out_shift − y_exp (D = data_bits: 31 + out_shift − y_exp for q31, q15)
   std::vector<std::int32_t> fir;
   struct Real {
     std::int32_t eps, shift, c;
@@ -53,6 +65,13 @@ struct FixedCoefficients {
   std::vector<Pair> pair;
   double l1_norm = 0.0;  ///< ‖h‖₁ of the quantised filter (value units, before the output shift)
 
+  /// q15 with 32-bit coefficients (bits = 31).
+  bool wide() const { return format == Format::q15 && bits == 31; }
+  /// What the kernel's output is, in value units, per unit of dequantised()'s response: the accumulator
+  /// Σ m·s = y · 2^(B + 31 − y_exp) is shifted right by acc_shift into Q1.D with output scale 2^−out_shift, so
+  /// 2^(B + 31 − D + out_shift − y_exp − acc_shift); 1 for a consistent header (docs/runtime.md).
+  double output_gain() const;
+
   /// The double-precision model these integers represent exactly (for checkers and references).
   DiscreteModel dequantised(double fs_hz) const;
   /// Samples after which a state excited to full scale has reached exactly 0 with zero input
@@ -60,8 +79,8 @@ struct FixedCoefficients {
   int zero_decay_bound() const;
 };
 
-/// Quantises to q31 or q15 (throws InternalError for f32).
-FixedCoefficients quantise(const DiscreteModel& model, Format format);
+/// Quantises to q31 or q15 (throws InternalError for f32); `wide`: q15 with 32-bit coefficients.
+FixedCoefficients quantise(const DiscreteModel& model, Format format, bool wide = false);
 
 /// Replaces every pole of `model` (ε of a real term; e_r, p_i, g of a pair, and the λ, α, β they imply) by
 /// the value `format` stores: rounded to float for f32, the mantissa and term exponent quantise() chooses
@@ -69,6 +88,6 @@ FixedCoefficients quantise(const DiscreteModel& model, Format format);
 /// values are exactly representable at the term's exponent, and only a mantissa sum within rounding of the
 /// exponent's limit could make it choose a coarser one (the test of a narrow q15 pair checks the integers;
 /// `admitgen check` reads what is written in any case).
-void store_poles(DiscreteModel& model, Format format);
+void store_poles(DiscreteModel& model, Format format, bool wide = false);
 
 }  // namespace admitgen::codegen

@@ -28,6 +28,7 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <utility>
 #include <functional>
 #include <string>
 #include <vector>
@@ -54,6 +55,11 @@ struct PairTerm {
 /// pair (exact for f32 coefficients; the discrete_stability check decides q31/q15 in integers).
 bool inside_unit_circle(const RealTerm& term);
 bool inside_unit_circle(const PairTerm& term);
+
+/// Upper bounds of ‖ξ‖₁ and ‖η‖₁ for ψ_n = πⁿ g (the pair's state impulse response, docs/physics.md §3.3: the
+/// largest |state| a full-scale input of any sign pattern reaches): the explicit sum over n < N plus the tail
+/// bound g rᴺ/(1 − r), N where that tail is below 1e-13 (at most 2^22 samples). +∞ when |π| ≥ 1.
+std::pair<double, double> state_l1(const PairTerm& term);
 
 struct DiscreteModel {
   double fs_hz = 0.0;

@@ -104,8 +104,10 @@ TableText emitted_tables(const EmittedRate& r, Format format) {
       return table_text(RuntimeModelF32(r.f32, r.fs_hz), ADMITGEN_RT_F32_REAL_WIDTH, ADMITGEN_RT_F32_PAIR_WIDTH, flit);
     case Format::q31:
       return table_text(RuntimeModelQ31(*r.fixed, r.fs_hz), ADMITGEN_RT_Q_REAL_WIDTH, ADMITGEN_RT_Q_PAIR_WIDTH, integer);
-    case Format::q15:
-      return table_text(RuntimeModelQ15(*r.fixed, r.fs_hz), ADMITGEN_RT_Q_REAL_WIDTH, ADMITGEN_RT_Q_PAIR_WIDTH, integer);
+    case Format::q15:  // 32-bit coefficients: the q31 rows
+      return r.fixed->wide()
+                 ? table_text(RuntimeModelQ31(*r.fixed, r.fs_hz), ADMITGEN_RT_Q_REAL_WIDTH, ADMITGEN_RT_Q_PAIR_WIDTH, integer)
+                 : table_text(RuntimeModelQ15(*r.fixed, r.fs_hz), ADMITGEN_RT_Q_REAL_WIDTH, ADMITGEN_RT_Q_PAIR_WIDTH, integer);
   }
   throw InternalError("unknown format");
 }
@@ -173,6 +175,13 @@ TemplateContext rate_context(const EmittedRate& r, Format format) {
   c.values["fs"] = std::to_string(r.fs_hz);
   c.values["refit_err"] = fmt::format("{:.3g}", m.refit_max_rel_error);
   c.values["plrc_err"] = fmt::format("{:.3g}", m.plrc_max_rel_error);
+  const Fidelity& fi = r.fidelity;
+  c.values["fidelity"] = fmt::format(
+      "max |H - G|/|G| of the {} coefficients as the kernel runs them: {:.3g} in the data band (at {:.5g} Hz), "
+      "{:.3g} from its top to 0.45 fs; rounding noise floor {:.3g} for |u| <= 1 (a full-scale tone: SNR >= {:.1f} dB "
+      "in band, at {:.5g} Hz)",
+      format_name(format), fi.max_rel_deviation, fi.at_hz, fi.max_rel_deviation_above, fi.noise_floor, fi.min_snr_db,
+      fi.snr_at_hz);
   c.values["passive_note"] =
       !m.passive_certified ? "not certified by the generator (see admitgen check)"
       : m.passive_rounds == 0 ? "Re H >= 0 up to Nyquist (Hamiltonian test, docs/passivity.md); the least-squares refit was already passive"
@@ -198,6 +207,12 @@ TemplateContext rate_context(const EmittedRate& r, Format format) {
                                   {"decay", std::to_string(q.zero_decay_bound())}})};
   }
   table_lists(r, format, c);
+  // The struct's table pointers: 16-bit (or f32/q31) tables in fir/real/pair; q15 with 32-bit coefficients in
+  // fir32/real32/pair32 (runtime/include/admitgen_rt.h).
+  const bool wide = r.fixed && r.fixed->wide();
+  c.lists["tables16"] = wide ? std::vector<TemplateContext>{} : std::vector<TemplateContext>{item({})};
+  c.lists["q15_no_tables32"] = format == Format::q15 && !wide ? std::vector<TemplateContext>{item({})} : std::vector<TemplateContext>{};
+  c.lists["q15_tables32"] = wide ? std::vector<TemplateContext>{item({})} : std::vector<TemplateContext>{};
   return c;
 }
 
@@ -243,6 +258,8 @@ EmissionSource read_emission_source(const FitRecord& fit, const std::string& fit
   return e;
 }
 
+DiscreteModel EmittedRate::emitted_model() const { return fixed ? fixed->dequantised(fs_hz) : as_emitted(model, f32); }
+
 Emission prepare_emission(const EmissionSource& source, const EmitSettings& settings) {
   validate(settings);
   Emission e;
@@ -253,16 +270,20 @@ Emission prepare_emission(const EmissionSource& source, const EmitSettings& sett
   options.passivity_violations = settings.passivity_violations;
   options.passive_margin = settings.passive_margin;
   if (settings.refit_to_stored_poles)
-    options.store_poles = [format = settings.format](DiscreteModel& m) { store_poles(m, format); };
+    options.store_poles = [format = settings.format, wide = settings.wide_coefficients](DiscreteModel& m) {
+      store_poles(m, format, wide);
+    };
   for (double fs : settings.fs_hz) {
     EmittedRate r;
     r.fs_hz = static_cast<int>(fs);
     r.model = discretise(e.surface.order, e.surface.theta, fs, e.data_f_hz, options);
     r.f32 = to_float(r.model);
-    if (settings.format != Format::f32) r.fixed = quantise(r.model, settings.format);
+    if (settings.format != Format::f32) r.fixed = quantise(r.model, settings.format, settings.wide_coefficients);
     e.rates.push_back(std::move(r));
   }
   const auto [lo, hi] = std::minmax_element(e.data_f_hz.begin(), e.data_f_hz.end());
+  for (auto& r : e.rates)
+    r.fidelity = fidelity(e.surface, r.emitted_model(), r.fixed ? &*r.fixed : nullptr, *lo, *hi);
   e.octave = band_absorption(e.surface.order, e.surface.theta, 1, *lo, *hi);
   e.third_octave = band_absorption(e.surface.order, e.surface.theta, 3, *lo, *hi);
   return e;
@@ -300,11 +321,18 @@ std::string render_header(const Emission& e, const std::string& template_text, c
               {"f_max", fmt::format("{:g}", *std::max_element(e.data_f_hz.begin(), e.data_f_hz.end()))},
               {"rate_list", join(rate_list, ", ")},
               {"abi", std::to_string(kRuntimeAbi)},
-              {"ctype", s.format == Format::f32 ? "float" : s.format == Format::q31 ? "int32_t" : "int16_t"},
+              {"ctype", table_ctype(s.format, s.wide_coefficients)},
               {"n_theta", std::to_string(e.surface.theta.size())},
               {"n_octave", std::to_string(e.octave.size())},
               {"n_third", std::to_string(e.third_octave.size())},
-              {"bits_doc", s.format == Format::q15 ? "15" : "31"},
+              {"bits_doc", std::to_string(coefficient_bits(s.format, s.wide_coefficients))},
+              {"data_bits", s.format == Format::q15 ? "15" : "31"},
+              {"coefficient_note",
+               s.format == Format::q15 && s.wide_coefficients
+                   ? "32-bit (int32 tables in fir32/real32/pair32, B = 31): chosen because the 16-bit coefficients did "
+                     "not pass admitgen check (the reason is in the notes above)"
+                   : fmt::format("{}-bit mantissas, B = {}", coefficient_bits(s.format, s.wide_coefficients) + 1,
+                                 coefficient_bits(s.format, s.wide_coefficients))},
               {"order_q", std::to_string(e.surface.order.q())},
               {"order_s", std::to_string(e.surface.order.s())}};
   std::string json = model_block;

@@ -9,6 +9,7 @@
 #include "codegen/band_absorption.hpp"
 #include "codegen/coefficients.hpp"
 #include "codegen/discrete_model.hpp"
+#include "codegen/fidelity.hpp"
 #include "model/multipole_surface.hpp"
 
 #include <cstdint>
@@ -38,6 +39,11 @@ struct EmitSettings {
   /// Refit the numerators to the poles as the format stores them (DiscretiseOptions::store_poles); emit
   /// turns it on only when the refit to the exact poles cannot be certified after rounding.
   bool refit_to_stored_poles = false;
+  /// q15 only: 32-bit coefficients (codegen/coefficients.hpp, coefficient_bits); emit chooses it when the 16-bit
+  /// header fails a check (docs/runtime.md, "Q formats and rounding").
+  bool wide_coefficients = false;
+  /// Tolerance of the fidelity check the header must pass (codegen/fidelity.hpp).
+  double fidelity_tolerance = kDefaultFidelityTolerance;
 };
 
 /// What emit changed to make the continuous model passive (stamped in the header's model block).
@@ -67,6 +73,10 @@ struct EmittedRate {
   DiscreteModel model;                      ///< double precision, before rounding to the format
   FloatCoefficients f32;                    ///< format f32
   std::optional<FixedCoefficients> fixed;   ///< formats q31, q15
+  Fidelity fidelity;                        ///< of the coefficients as emitted (codegen/fidelity.hpp)
+
+  /// The filter the kernel runs, in exact arithmetic: the dequantised tables (q31/q15) or the float values (f32).
+  DiscreteModel emitted_model() const;
 };
 
 struct Emission : EmissionSource {

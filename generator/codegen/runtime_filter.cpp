@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <type_traits>
 
 namespace admitgen::codegen {
 namespace {
@@ -98,11 +99,34 @@ void set_scalars(Model& m, const FixedCoefficients& c) {
   m.acc_shift = c.acc_shift;
 }
 
+/// The table pointers of the model struct: q15 with 32-bit coefficients uses fir32/real32/pair32.
+template <typename Model, typename T>
+void set_tables(Model& m, const std::vector<T>& fir, const std::vector<T>& real, const std::vector<T>& pair) {
+  m.fir = fir.data();
+  m.real = real.data();
+  m.pair = pair.data();
+}
+void set_tables(admitgen_rt_model_q15& m, const std::vector<std::int32_t>& fir, const std::vector<std::int32_t>& real,
+                const std::vector<std::int32_t>& pair) {
+  m.fir = nullptr, m.real = nullptr, m.pair = nullptr;
+  m.fir32 = fir.data();
+  m.real32 = real.data();
+  m.pair32 = pair.data();
+}
+
+bool wide_tables(const FloatCoefficients&) { return false; }
+bool wide_tables(const FixedCoefficients& c) { return c.wide(); }
+
 }  // namespace
 
 template <typename Sample>
 RuntimeModel<Sample>::RuntimeModel(const typename RuntimeTypes<Sample>::Coefficients& c, int fs_hz) {
-  fill_tables(c, fir_, real_, pair_);
+  const bool wide = std::is_same_v<Sample, std::int16_t> && wide_tables(c);  // q31 rows are int32 anyway
+  if (wide) {
+    if constexpr (std::is_same_v<Sample, std::int16_t>) fill_tables(c, fir32_, real32_, pair32_);
+  } else {
+    fill_tables(c, fir_, real_, pair_);
+  }
   model_.abi_version = ADMITGEN_RT_ABI_VERSION;
   model_.fs_hz = fs_hz;
   model_.method = ADMITGEN_RT_METHOD_MATCHED_EXP;
@@ -110,9 +134,14 @@ RuntimeModel<Sample>::RuntimeModel(const typename RuntimeTypes<Sample>::Coeffici
   model_.n_real = static_cast<std::int32_t>(c.real.size());
   model_.n_pair = static_cast<std::int32_t>(c.pair.size());
   set_scalars(model_, c);
-  model_.fir = fir_.data();
-  model_.real = real_.data();
-  model_.pair = pair_.data();
+  if constexpr (std::is_same_v<Sample, std::int16_t>) {
+    if (wide) {
+      model_.n_fir = static_cast<std::int32_t>(fir32_.size());
+      set_tables(model_, fir32_, real32_, pair32_);
+      return;
+    }
+  }
+  set_tables(model_, fir_, real_, pair_);
 }
 template class RuntimeModel<float>;
 template class RuntimeModel<std::int32_t>;

@@ -58,6 +58,7 @@ class RuntimeModel {
 
  private:
   std::vector<Sample> fir_, real_, pair_;
+  std::vector<std::int32_t> fir32_, real32_, pair32_;  ///< q15 with 32-bit coefficients (FixedCoefficients::wide)
   Model model_{};
 };
 using RuntimeModelF32 = RuntimeModel<float>;

@@ -19,24 +19,6 @@ Eigen::ArrayXcd response(const codegen::DiscreteModel& model, const Eigen::Array
   return h;
 }
 
-/// The double model with every coefficient replaced by the float the f32 tables hold (adapter: codegen
-/// keeps the float tables, but evaluates responses on DiscreteModel).
-codegen::DiscreteModel as_emitted_f32(const codegen::DiscreteModel& model, const codegen::FloatCoefficients& f) {
-  codegen::DiscreteModel m = model;
-  for (std::size_t k = 0; k < m.fir.size(); ++k) m.fir[k] = f.fir[k];
-  for (std::size_t q = 0; q < m.real.size(); ++q) {
-    m.real[q].eps = f.real[q][0];
-    m.real[q].c = f.real[q][1];
-  }
-  for (std::size_t s = 0; s < m.pair.size(); ++s) {  // {e_r, p_i, g, 2 Re c, −2 Im c}
-    m.pair[s].e_r = f.pair[s][0];
-    m.pair[s].p_i = f.pair[s][1];
-    m.pair[s].g = f.pair[s][2];
-    m.pair[s].c = {0.5 * f.pair[s][3], -0.5 * f.pair[s][4]};
-  }
-  return m;
-}
-
 StageGap stage(const std::string& name, const Eigen::ArrayXd& f, const Eigen::ArrayXcd& y_real,
                const Eigen::ArrayXcd& before, const Eigen::ArrayXcd& after, double level, std::string detail = {}) {
   return {name, measure_gap(f, before, after, level), measure_gap(f, y_real, after, level), std::move(detail)};
@@ -74,9 +56,7 @@ std::vector<StageGap> attribute_stages(const Eigen::ArrayXd& f_hz, const Eigen::
   const double level = rms_level(y_real);
   const Eigen::ArrayXcd y_fit = surface_admittance(emission.surface, f_hz);
   const Eigen::ArrayXcd y_discrete = response(rate.model, f_hz);
-  const codegen::DiscreteModel emitted =
-      rate.fixed ? rate.fixed->dequantised(request.fs_hz) : as_emitted_f32(rate.model, rate.f32);
-  const Eigen::ArrayXcd y_emitted = response(emitted, f_hz);
+  const Eigen::ArrayXcd y_emitted = response(rate.emitted_model(), f_hz);
 
   std::vector<StageGap> out;
   out.push_back(stage("fit", f_hz, y_real, y_real, y_fit, level));

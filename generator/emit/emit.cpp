@@ -88,6 +88,32 @@ void enforce_continuous_passivity(codegen::EmissionSource& source) {
   source.surface.theta = p.theta;
 }
 
+namespace {
+
+/// Steps 2-3 at the settings' coefficient width: first the refit to the exact discrete poles, at rising margins;
+/// where rounding the poles themselves breaks every certificate (a narrow pair whose stored pole moves its
+/// resonance), the refit to the poles as stored (docs/passivity.md, "Refit to the stored poles"). (Without
+/// enforcement the first candidate is returned as it is.)
+EmitResult emit_at_width(const codegen::EmissionSource& source, codegen::EmitSettings settings,
+                         const std::string& template_text, const std::string& header_file_name) {
+  EmitResult r;
+  for (bool stored : {false, true}) {
+    settings.refit_to_stored_poles = stored;
+    for (double margin : kMargins) {
+      settings.passive_margin = margin;
+      r.emission = codegen::prepare_emission(source, settings);
+      r.header = io::header_text(r.emission, template_text, header_file_name);
+      auto subject = io::header_subject(r.header, header_file_name);
+      subject.fidelity_tolerance = settings.fidelity_tolerance;
+      r.report = checks::run_checks(subject);
+      if (!settings.enforce_passivity || !discrete_passivity_failed(r.report)) return r;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
 EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::EmitSettings settings,
                 const std::string& template_text, const std::string& header_file_name) {
   codegen::EmissionSource source;
@@ -100,28 +126,26 @@ EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::Emit
   } else {
     source = codegen::read_emission_source(fit, fit_path, settings);
   }
+  return emit(std::move(source), std::move(settings), template_text, header_file_name);
+}
+
+EmitResult emit(codegen::EmissionSource source, codegen::EmitSettings settings, const std::string& template_text,
+                const std::string& header_file_name) {
   if (settings.enforce_passivity) {
     enforce_continuous_passivity(source);
     settings.passivity_violations = discrete_passivity_violations;
   } else {
     source.notes.push_back("emitted without passivity enforcement (" + setting("enforce_passivity = false") + ")");
   }
-  EmitResult r;
-  // First the refit to the exact discrete poles, at rising margins; where rounding the poles themselves
-  // breaks every certificate (a narrow pair whose stored pole moves its resonance), the refit to the poles
-  // as stored (docs/passivity.md, "Refit to the stored poles").
-  // (Without enforcement the first candidate is returned as it is.)
-  for (bool stored : {false, true}) {
-    settings.refit_to_stored_poles = stored;
-    for (double margin : kMargins) {
-      settings.passive_margin = margin;
-      r.emission = codegen::prepare_emission(source, settings);
-      r.header = io::header_text(r.emission, template_text, header_file_name);
-      r.report = checks::run_checks(io::header_subject(r.header, header_file_name));
-      if (!settings.enforce_passivity || !discrete_passivity_failed(r.report)) return r;
-    }
-  }
-  return r;
+  // q15: 16-bit coefficients first; a header that fails a check with them is emitted with 32-bit coefficients
+  // (docs/runtime.md, "Q formats and rounding"), and the header says why.
+  EmitResult narrow = emit_at_width(source, settings, template_text, header_file_name);
+  if (narrow.safe() || settings.format != codegen::Format::q15) return narrow;
+  source.notes.push_back(fmt::format("q15 with 32-bit coefficients: with 16-bit ones the header failed admitgen check "
+                                     "({})", fmt::join(narrow.report.failed_checks(), ", ")));
+  settings.wide_coefficients = true;
+  EmitResult wide = emit_at_width(source, settings, template_text, header_file_name);
+  return wide.safe() ? wide : narrow;
 }
 
 std::string EmitResult::refusal(const std::string& out) const {
@@ -142,6 +166,13 @@ std::string EmitResult::refusal(const std::string& out) const {
                        setting("fs_hz"), setting("format", "f32"), setting("fir_taps", "1..8"));
   else if (has("headroom") || has("limit_cycle"))
     next = "fixed-point range: try " + setting("format", "q31") + " (or f32) instead of q15";
+  else if (has("fidelity"))
+    next = fmt::format("the filter as stored is further from its model than {} (the header's fidelity line says where): "
+                       "a higher {} when the deviation sits near the band's top (the discretisation), {} or f32 when it "
+                       "is rounding, a smaller {} when the model is ill-conditioned (fit.json's conditioning of each "
+                       "order), or a looser {} if that accuracy is enough",
+                       setting("fidelity_tolerance"), setting("fs_hz"), setting("format", "q31"), setting("order"),
+                       setting("fidelity_tolerance"));
   else
     next = "re-run admitgen emit; if it persists, report it with the fit.json";
   return fmt::format("refusing to write {}: the filter fails admitgen check ({}){}\nnext step: {}", out,

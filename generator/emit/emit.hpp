@@ -36,6 +36,10 @@ struct EmitResult {
 EmitResult emit(const FitRecord& fit, const std::string& fit_path, codegen::EmitSettings settings,
                 const std::string& template_text, const std::string& header_file_name);
 
+/// The same from a continuous model already read (steps 1-4).
+EmitResult emit(codegen::EmissionSource source, codegen::EmitSettings settings, const std::string& template_text,
+                const std::string& header_file_name);
+
 /// Step 2's certifier (what the discrete refit is given): for each band of the filter where Re H < 0
 /// (discrete Hamiltonian test), its minimum and 9 points spanning it, in Hz; empty when passive up to Nyquist.
 std::vector<double> discrete_passivity_violations(const codegen::DiscreteModel& model);

@@ -147,6 +147,24 @@ void fields(V& v, checks::LimitCycleDetails& d) {
 }
 
 template <class V>
+void fields(V& v, checks::FidelityRate& r) {
+  v("fs_hz", r.fs_hz);
+  v("max_rel_deviation", r.max_rel_deviation);
+  v("at_hz", r.at_hz);
+  v("max_rel_deviation_above_band", r.max_rel_deviation_above_band);
+  v("noise_floor", r.noise_floor);
+  v("min_full_scale_snr_db", r.min_full_scale_snr_db);
+  v("snr_at_hz", r.snr_at_hz);
+}
+
+template <class V>
+void fields(V& v, checks::FidelityDetails& d) {
+  v("tolerance", d.tolerance);
+  v("min_full_scale_snr_db", d.min_full_scale_snr_db);
+  v("rates", d.rates);
+}
+
+template <class V>
 void fields(V& v, checks::CheckResult& c) {
   v("check", c.name);
   v.custom("status", c.status, StatusName{});
@@ -197,7 +215,8 @@ std::vector<std::pair<std::string, std::vector<KeyNode>>> check_details_keys() {
           {"passivity_continuous", record_keys<checks::PassivityDetails>()},
           {"passivity_discrete", record_keys<checks::DiscretePassivityDetails>()},
           {"headroom", record_keys<checks::HeadroomDetails>()},
-          {"limit_cycle", record_keys<checks::LimitCycleDetails>()}};
+          {"limit_cycle", record_keys<checks::LimitCycleDetails>()},
+          {"fidelity", record_keys<checks::FidelityDetails>()}};
 }
 
 }  // namespace admitgen::io

@@ -125,6 +125,7 @@ void fields(V& v, FitAccuracy& a) {
   v("max_band_delta_alpha", a.max_band_delta_alpha);
   v("worst_band_hz", a.worst_band_hz);
   v("meets_target", a.meets_target);
+  v("conditioning", a.conditioning);
 }
 
 template <class V>
@@ -152,6 +153,9 @@ void fields(V& v, FitPassiveEstimate& e) {
   v("pole_search_steps", e.pole_search_steps);
   v("passivity_cost", e.passivity_cost);
   v("passive_bound_relative_rms_residual", e.passive_bound_relative_rms_residual);
+  v("conditioning", e.conditioning);
+  v("best_sample_conditioning", e.best_sample_conditioning);
+  v("conditioning_tradeoff", e.conditioning_tradeoff, kPlain);
 }
 
 template <class V>

@@ -79,6 +79,11 @@ Json emission_json(const codegen::Emission& e) {
            {"passive_certified", r.model.passive_certified},
            {"passive_constraint_rounds", r.model.passive_rounds},
            {"folded", r.model.folded},
+           {"fidelity", {{"max_rel_deviation_in_band", r.fidelity.max_rel_deviation},
+                         {"at_hz", r.fidelity.at_hz},
+                         {"max_rel_deviation_above_band", r.fidelity.max_rel_deviation_above},
+                         {"noise_floor", r.fidelity.noise_floor},
+                         {"min_full_scale_snr_db", r.fidelity.min_snr_db}}},
            {"double", double_json(r.model)}};
     j[format_name(e.settings.format)] = coefficient_json(r, e.settings.format);
     rates.push_back(j);
@@ -148,7 +153,9 @@ FixedCoefficients fixed_from_tables(const nlohmann::json& coeffs, Format format,
   };
   FixedCoefficients q;
   q.format = format;
-  const int bits = format == Format::q31 ? 31 : 15;
+  // q15 tables hold 16-bit coefficients (B = 15) or 32-bit ones (B = 31; codegen/coefficients.hpp, wide()).
+  const bool wide = format == Format::q15 && coeffs.at("bits").is_number_integer() && coeffs.at("bits").get<long long>() == 31;
+  const int bits = coefficient_bits(format, wide);
   const long long m_max = (1LL << bits) - 1, m_min = -(1LL << bits);  // mantissas: int32 or int16
   q.bits = integer(coeffs.at("bits"), "bits", bits, bits);
   q.out_shift = integer(coeffs.at("out_shift"), "out_shift", -62, 62);

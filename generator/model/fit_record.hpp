@@ -102,6 +102,11 @@ struct FitPassiveEstimate {
   /// With passivity_cost: the relative RMS residual of the best passive fit of any order (docs/passivity.md,
   /// "The passive bound"); absent in older fits.
   std::optional<double> passive_bound_relative_rms_residual;
+  /// term_conditioning of the estimate and of the best sample over the data (docs/passivity.md,
+  /// "Conditioning"); absent in older fits.
+  std::optional<double> conditioning, best_sample_conditioning;
+  /// Why an estimate of conditioning above 10 was kept (the trade-off against the residual); absent otherwise.
+  std::optional<std::string> conditioning_tradeoff;
 };
 
 /// What an order costs and how close its passive estimate comes (selection/accuracy_target.hpp); absent in older
@@ -110,6 +115,7 @@ struct FitAccuracy {
   std::int64_t buffers = 0;  ///< Q + 2S state buffers per node
   double relative_rms_residual = 0.0, max_band_delta_alpha = 0.0, worst_band_hz = 0.0;
   bool meets_target = false;
+  double conditioning = 1.0;  ///< of the passive estimate (passive_estimate.conditioning, docs/passivity.md)
 };
 
 struct FitGoodness {

@@ -3,6 +3,8 @@
 
 #include "core/errors.hpp"
 
+#include <complex>
+
 namespace admitgen {
 
 MultipoleGrid::MultipoleGrid(const Eigen::ArrayXd& omega)
@@ -42,6 +44,19 @@ Eigen::ArrayXcd evaluate_multipole(const Order& order, const Eigen::VectorXd& th
   g.real() = re;
   g.imag() = im;
   return g;
+}
+
+double term_conditioning(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega) {
+  using C = std::complex<double>;
+  const Eigen::ArrayXcd jw = C(0.0, 1.0) * omega.cast<C>();
+  Eigen::ArrayXd sum = Eigen::ArrayXd::Constant(omega.size(), std::abs(theta[Order::g_inf()]));
+  for (int q = 0; q < order.q(); ++q) sum += (theta[Order::a(q)] / (theta[Order::lambda(q)] + jw)).abs();
+  for (int s = 0; s < order.s(); ++s) {
+    const C r(theta[order.b(s)], theta[order.c(s)]), p(theta[order.alpha(s)], theta[order.beta(s)]);
+    sum += (r / (p + jw) + std::conj(r) / (std::conj(p) + jw)).abs();
+  }
+  const double g = evaluate_multipole(order, theta, omega).abs().maxCoeff();
+  return g > 0.0 ? sum.maxCoeff() / g : 1.0;
 }
 
 }  // namespace admitgen

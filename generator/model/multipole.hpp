@@ -40,4 +40,10 @@ void evaluate_multipole(const Order& order, const double* theta, const Eigen::Ar
 /// Convenience form returning G as complex values.
 Eigen::ArrayXcd evaluate_multipole(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega);
 
+/// Conditioning of a model over frequencies ω (docs/passivity.md, "Conditioning"): the largest sum of the
+/// terms' magnitudes, |G∞| + Σ|A_q/(λ_q + jω)| + Σ|pair_s(ω)| (a pair and its conjugate as one term), over the
+/// largest |G|. 1 when no terms cancel; 679 for a model whose cancelling dipoles are 679× max |G|. A
+/// fixed-point table's shared exponent is set by the terms, so log2 of it is the bits lost to cancellation.
+double term_conditioning(const Order& order, const Eigen::VectorXd& theta, const Eigen::ArrayXd& omega);
+
 }  // namespace admitgen

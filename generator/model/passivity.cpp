@@ -24,14 +24,21 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kImagTolerance = 1e-5;
 /// |D| (or |G(0)|) below this fraction of the model's scale is treated as zero (R⁻¹ would be ill-conditioned).
 constexpr double kSingularFraction = 1e-6;
-/// Re G below −kSignTolerance · scale counts as negative (Re G is evaluated to ~1e-15 of the scale).
-constexpr double kSignTolerance = 1e-12;
-/// Points per decade of the decision's net of direct evaluations (see decide()): 32 for the certificates
-/// (continuous_passivity, hamiltonian_passivity), 4 over [λ_min/10, 10 λ_max] for the fitter's is_passive, which
-/// runs at every likelihood call of `fit --passive` (32 made that fit 4.6x slower) and whose samples are
-/// certified again before anything is shipped.
-constexpr int kNetPerDecade = 32;
+/// Points per decade of the decision's net of direct evaluations (see decide()): 200 for the certificates
+/// (continuous_passivity, hamiltonian_passivity: the net is also the reported minimum's scan), 4 over
+/// [λ_min/10, 10 λ_max] for the fitter's is_passive, which runs at every likelihood call of `fit --passive`
+/// (32 made that fit 4.6x slower) and whose samples are certified again before anything is shipped.
+constexpr int kNetPerDecade = 200;
 constexpr int kFitterNetPerDecade = 4;
+/// The net of a certifier in a loop (hamiltonian_passivity without the scan: emit's constraint rounds, whose
+/// final candidate is certified again with the full net).
+constexpr int kLoopNetPerDecade = 32;
+/// A Hamiltonian eigenvalue λ with |Re λ| ≤ kWindowSlope · Im λ gets a window of samples centred at Im λ
+/// (half width max(|Re λ|, kWindowFloor · |λ|)): a pair of crossings closer than rounding can resolve
+/// leaves the axis as ±δ + jω_m, ω_m inside the negative band between them (docs/passivity.md, "What the
+/// certificate guarantees").
+constexpr double kWindowSlope = 1.0;
+constexpr double kWindowFloor = 1e-7;
 
 /// G(0) = D − C A⁻¹ B.
 double dc_gain(const StateSpace& ss) {
@@ -50,15 +57,29 @@ StateSpace reciprocal(const StateSpace& ss) {
   return r;
 }
 
-/// Boundary between {Re G ≥ −tol} and {Re G < −tol} inside [a, b] (exactly one side at each end),
-/// by bisection (geometric when a > 0) to 1e-14 relative width.
-double polish(const RealPartFn& re, double a, double b, double tol) {
-  const bool a_negative = re(a) < -tol;
+/// Boundary between {Re G ≥ 0} and {Re G < 0} inside [a, b] (exactly one side at each end), by bisection
+/// (geometric when a > 0) to 1e-14 relative width.
+double polish(const RealPartFn& re, double a, double b) {
+  const bool a_negative = re(a) < 0.0;
   for (int it = 0; it < 200 && b - a > 1e-14 * b; ++it) {
     const double m = a > 0.0 ? std::sqrt(a * b) : 0.25 * b;
-    ((re(m) < -tol) == a_negative ? a : b) = m;
+    ((re(m) < 0.0) == a_negative ? a : b) = m;
   }
   return 0.5 * (a + b);
+}
+
+/// Golden-section minimum of Re G on [a, b] (60 steps: the bracket shrinks by 0.618^60 ≈ 3e-13).
+std::pair<double, double> golden_minimum(const RealPartFn& re, double a, double b) {
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 60; ++it) {
+    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    if (re(x1) < re(x2))
+      b = x2;
+    else
+      a = x1;
+  }
+  const double m = 0.5 * (a + b);
+  return {m, re(m)};
 }
 
 /// Minimum of Re G on [lo, hi] (hi finite): log scan, then golden-section refinement of the best cell.
@@ -73,97 +94,143 @@ std::pair<double, double> minimum_on(const RealPartFn& re, double lo, double hi)
     const double v = re(w[i]);
     if (v < best) best = v, best_w = w[i], k = i;
   }
-  double a = w[std::max(0, k - 1)], b = w[std::min(kScan, k + 1)];
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  for (int it = 0; it < 60; ++it) {
-    const double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    if (re(x1) < re(x2))
-      b = x2;
-    else
-      a = x1;
-  }
-  const double m = 0.5 * (a + b), vm = re(m);
+  const auto [m, vm] = golden_minimum(re, w[std::max(0, k - 1)], w[std::min(kScan, k + 1)]);
   if (vm < best) best = vm, best_w = m;
   return {best_w, best};
 }
 
-/// Crossing candidates of ss (R = 2D, or the reciprocal / ε-shifted realisation when D vanishes).
-std::vector<double> candidates(const StateSpace& ss, double scale, std::string& method) {
+/// Whether a Hamiltonian eigenvalue counts as a crossing candidate: |Re λ| ≤ kImagTolerance |λ|.
+bool near_axis(std::complex<double> l) { return std::abs(l.real()) <= kImagTolerance * std::abs(l); }
+
+/// Hamiltonian eigenvalues of ss (R = 2D, or the reciprocal / ε-shifted realisation when D vanishes), mapped
+/// to the s-plane of G (Im ≥ 0), and the crossing candidates among them (|Re λ| ≤ kImagTolerance |λ|).
+struct Spectrum {
+  std::vector<std::complex<double>> eigenvalues;
+  std::vector<double> crossings;
+};
+
+Spectrum spectrum(const StateSpace& ss, double scale, std::string& method) {
   const double g0 = dc_gain(ss);
+  Spectrum out;
   if (std::abs(ss.D) >= kSingularFraction * scale) {
     method = "hamiltonian";
-    return hamiltonian_crossings(ss);
-  }
-  if (std::abs(g0) >= kSingularFraction * scale) {
+    out.eigenvalues = hamiltonian_eigenvalues(ss);
+  } else if (std::abs(g0) >= kSingularFraction * scale) {
     method = "hamiltonian of the reciprocal realisation G(1/s) (G at infinite frequency is 0)";
-    std::vector<double> w;
-    for (double v : hamiltonian_crossings(reciprocal(ss)))
-      if (v > 0.0) w.push_back(1.0 / v);
-    std::sort(w.begin(), w.end());
-    return w;
+    // s = 1/s': an eigenvalue s' of the reciprocal's Hamiltonian is the point 1/s' of G's s-plane.
+    for (const auto l : hamiltonian_eigenvalues(reciprocal(ss)))
+      if (std::abs(l) > 0.0) {
+        const auto m = 1.0 / l;
+        out.eigenvalues.emplace_back(m.real(), std::abs(m.imag()));
+      }
+  } else {
+    StateSpace shifted = ss;
+    shifted.D += kSingularFraction * scale;
+    method = fmt::format("hamiltonian of G + {:.3g} (G(0) = G(inf) = 0), with the sign of Re G itself sampled",
+                         kSingularFraction * scale);
+    out.eigenvalues = hamiltonian_eigenvalues(shifted);
   }
-  StateSpace shifted = ss;
-  shifted.D += kSingularFraction * scale;
-  method = fmt::format("hamiltonian of G + {:.3g} (G(0) = G(inf) = 0: proves Re G >= -{:.3g})",
-                       kSingularFraction * scale, kSingularFraction * scale);
-  return hamiltonian_crossings(shifted);
+  for (const auto l : out.eigenvalues)
+    if (near_axis(l) && l.imag() > 0.0) out.crossings.push_back(l.imag());
+  std::sort(out.crossings.begin(), out.crossings.end());
+  return out;
 }
 
-/// The exact decision: crossings → sign per interval → polished negative bands, over [lo, hi] and beyond.
-/// A net of kNetPerDecade log-spaced points per decade over [lo, hi] joins the sample points: where residues
-/// cancel by many orders of magnitude (|A| ~ 1e9 for |G| ~ 1e3, a posterior sample along a nearly degenerate
-/// residue direction), rounding moves the Hamiltonian's imaginary-axis eigenvalues off the axis and the
-/// crossings are lost; every negative band at least a net spacing wide is still found, by direct evaluation of
-/// Re G. (Such a sample, certified before the net, had Re G = −1225 at 5359 Hz: tests/checks/test_passivity.cpp.)
-PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi,
-                       int net_per_decade = kNetPerDecade) {
-  PassivityResult r;
-  const double w_ref = std::sqrt(lo * hi);
-  const double tol = kSignTolerance * scale;
-  const std::vector<double> cand = candidates(ss, scale, r.method);
-  // Sample points: 0, every candidate, the midpoint of each gap, one point beyond the last, the net, and ∞ (= D).
+/// The sample points of the decision (native frequency, ascending, distinct, all ≥ 0): 0, every crossing
+/// candidate and the midpoint of each gap, one point beyond the last, the net over [lo, hi], the windows of the
+/// eigenvalues near the axis and the caller's feature windows.
+std::vector<double> sample_points(const Spectrum& sp, const std::vector<FeatureWindow>& features, double lo, double hi,
+                                  int net_per_decade) {
   std::vector<double> w{0.0};
   double prev = 0.0;
-  for (double c : cand) {
-    if (c <= 0.0) continue;
+  for (double c : sp.crossings) {
     w.push_back(prev > 0.0 ? std::sqrt(prev * c) : 0.5 * c);
     w.push_back(c);
     prev = c;
   }
-  w.push_back(prev > 0.0 ? 2.0 * prev : w_ref);
+  w.push_back(prev > 0.0 ? 2.0 * prev : std::sqrt(lo * hi));
   const std::vector<double> net = log_grid(lo, hi, net_per_decade);
   w.insert(w.end(), net.begin(), net.end());
+  const auto add_window = [&w](double centre, double half) {
+    w.push_back(centre);
+    for (double x : resonance_points(centre, half))
+      if (x > 0.0) w.push_back(x);
+  };
+  for (const auto l : sp.eigenvalues)
+    if (l.imag() > 0.0 && std::abs(l.real()) <= kWindowSlope * l.imag())
+      add_window(l.imag(), std::max(std::abs(l.real()), kWindowFloor * std::abs(l)));
+  for (const auto& f : features)
+    if (f.centre > 0.0 && f.half > 0.0) add_window(f.centre, f.half);
   std::sort(w.begin(), w.end());
   w.erase(std::unique(w.begin(), w.end()), w.end());
+  return w;
+}
+
+/// The decision (docs/passivity.md, "What the certificate guarantees"). Re G is evaluated at the sample points
+/// (sample_points); every local minimum among them is refined by golden section between its neighbours; every
+/// run of samples with Re G < 0 (strictly: no tolerance, so a reported minimum below 0 is always a band) is a
+/// negative band, its edges polished by bisection. The Hamiltonian's eigenvalues supply the crossings and the
+/// windows where narrow bands hide (between two crossings closer than rounding resolves, the pair of
+/// eigenvalues leaves the axis); the net catches bands that rounding hides from the eigenvalues entirely (where
+/// residues cancel by many orders of magnitude, |A| ~ 1e9 for |G| ~ 1e3: such a sample, certified before the
+/// net, had Re G = −1225 at 5359 Hz: tests/checks/test_passivity.cpp).
+/// Re G at many frequencies at once (the bulk of the decision's samples); empty: one call of the scalar one each.
+using RealPartsFn = std::function<std::vector<double>(const std::vector<double>& omega)>;
+
+PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi,
+                       const std::vector<FeatureWindow>& features, int net_per_decade = kNetPerDecade,
+                       const RealPartsFn& res = {}) {
+  PassivityResult r;
+  const Spectrum sp = spectrum(ss, scale, r.method);
+  std::vector<double> w = sample_points(sp, features, lo, hi, net_per_decade);
   std::vector<double> v;
-  for (double x : w) v.push_back(re(x));
-  w.push_back(kInf);
-  v.push_back(ss.D);
-  for (std::size_t i = 0; i < w.size(); ++i) {
-    if (!(v[i] < -tol)) continue;
+  if (res) {
+    v = res(w);
+  } else {
+    for (const double x : w) v.push_back(re(x));
+  }
+  // Refine every interior local minimum that is not already negative: a dip narrower than the spacing.
+  std::vector<std::pair<double, double>> refined;
+  for (std::size_t i = 1; i + 1 < w.size(); ++i)
+    if (v[i] <= v[i - 1] && v[i] <= v[i + 1] && v[i] >= 0.0) {
+      const auto m = golden_minimum(re, w[i - 1], w[i + 1]);
+      if (m.second < v[i]) refined.push_back(m);
+    }
+  for (const auto& m : refined) w.push_back(m.first), v.push_back(m.second);
+  std::vector<std::size_t> idx(w.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return w[a] < w[b]; });
+  std::vector<double> ws, vs;
+  for (std::size_t i : idx) ws.push_back(w[i]), vs.push_back(v[i]);
+  ws.push_back(kInf);
+  vs.push_back(ss.D);
+  r.min_re = ss.D, r.min_at = kInf;
+  for (std::size_t i = 0; i + 1 < ws.size(); ++i)
+    if (vs[i] < r.min_re) r.min_re = vs[i], r.min_at = ws[i];
+  for (std::size_t i = 0; i < ws.size(); ++i) {
+    if (!(vs[i] < 0.0)) continue;
     std::size_t j = i;
-    while (j + 1 < w.size() && v[j + 1] < -tol) ++j;
+    while (j + 1 < ws.size() && vs[j + 1] < 0.0) ++j;
     NegativeBand b;
-    b.lo = i == 0 ? 0.0 : polish(re, w[i - 1], w[i], tol);
-    if (j + 1 < w.size()) {
-      b.hi = w[j + 1] == kInf ? kInf : polish(re, w[j], w[j + 1], tol);
-    } else {
-      b.hi = kInf;
-    }
-    if (b.hi == kInf && j + 1 == w.size() - 1) {
+    b.lo = i == 0 ? 0.0 : polish(re, ws[i - 1], ws[i]);
+    b.hi = j + 1 < ws.size() ? (ws[j + 1] == kInf ? kInf : polish(re, ws[j], ws[j + 1])) : kInf;
+    if (b.hi == kInf && j + 1 == ws.size() - 1) {
       // Negative up to the last finite sample but G(∞) ≥ 0: the band ends further out; bracket it.
-      double x = w[j];
-      for (int k = 0; k < 200 && re(x) < -tol; ++k) x *= 2.0;
-      if (!(re(x) < -tol)) b.hi = polish(re, w[j], x, tol);
+      double x = ws[j];
+      for (int k = 0; k < 200 && re(x) < 0.0; ++k) x *= 2.0;
+      if (!(re(x) < 0.0)) b.hi = polish(re, ws[j], x);
     }
-    const double hi = b.hi == kInf ? std::max(1e6 * std::max(b.lo, w_ref), 1e6) : b.hi;
-    std::tie(b.at, b.min_re) = minimum_on(re, b.lo, hi);
+    const double top = b.hi == kInf ? std::max(1e6 * std::max(b.lo, std::sqrt(lo * hi)), 1e6) : b.hi;
+    std::tie(b.at, b.min_re) = minimum_on(re, b.lo, top);
+    for (std::size_t k = i; k <= j && k + 1 < ws.size(); ++k)
+      if (vs[k] < b.min_re) b.min_re = vs[k], b.at = ws[k];
     if (b.hi == kInf && ss.D < b.min_re) b.min_re = ss.D, b.at = kInf;
+    if (b.min_re < r.min_re) r.min_re = b.min_re, r.min_at = b.at;
     r.bands.push_back(b);
     i = j;
   }
-  for (double c : cand)
-    if (c > 0.0 && std::abs(re(c)) <= 1e-6 * scale) r.crossings.push_back(c);
+  for (double c : sp.crossings)
+    if (std::abs(re(c)) <= 1e-6 * scale) r.crossings.push_back(c);
   for (const auto& b : r.bands) {
     if (b.lo > 0.0) r.crossings.push_back(b.lo);
     if (b.hi < kInf) r.crossings.push_back(b.hi);
@@ -172,7 +239,7 @@ PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale,
   r.crossings.erase(std::unique(r.crossings.begin(), r.crossings.end(),
                                 [](double a, double b) { return std::abs(a - b) <= 1e-9 * b; }),
                     r.crossings.end());
-  r.passive = r.bands.empty();
+  r.passive = r.bands.empty() && r.min_re >= 0.0;
   return r;
 }
 
@@ -184,19 +251,11 @@ double model_scale(const StateSpace& ss, const RealPartFn& re, double lo, double
   return s > 0.0 ? s : 1.0;
 }
 
-/// Dense log scan (reporting the minimum only; the decision above does not depend on it).
-void scan_minimum(PassivityResult& r, const RealPartFn& re, double lo, double hi, double d) {
-  r.min_re = d;
-  r.min_at = kInf;
-  constexpr int kScan = 2000;
-  for (int i = 0; i <= kScan; ++i) {
-    const double w = lo * std::pow(hi / lo, double(i) / kScan), v = re(w);
-    if (v < r.min_re) r.min_re = v, r.min_at = w;
-  }
-  const double v0 = re(0.0);
-  if (v0 < r.min_re) r.min_re = v0, r.min_at = 0.0;
-  for (const auto& b : r.bands)
-    if (b.min_re < r.min_re) r.min_re = b.min_re, r.min_at = b.at;
+/// Re G of a multipole at every ω of `omega` (one vectorised pass per term).
+std::vector<double> re_multipole_at(const Order& order, const double* theta, const std::vector<double>& omega) {
+  Eigen::ArrayXd re, im;
+  evaluate_multipole(order, theta, Eigen::Map<const Eigen::ArrayXd>(omega.data(), Eigen::Index(omega.size())), re, im);
+  return {re.data(), re.data() + re.size()};
 }
 
 double re_multipole(const Order& order, const double* theta, double omega) {
@@ -227,7 +286,7 @@ std::pair<double, double> pole_range(const Order& order, const double* theta) {
 
 }  // namespace
 
-std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
+std::vector<std::complex<double>> hamiltonian_eigenvalues(const StateSpace& ss) {
   const Eigen::Index n = ss.states();
   if (n == 0) return {};
   ADMITGEN_ENSURE(ss.D != 0.0, "Hamiltonian test needs D != 0");
@@ -256,27 +315,31 @@ std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
     ADMITGEN_ENSURE(ces.info() == Eigen::Success, "Hamiltonian eigenvalues did not converge");
     eigenvalues = ces.eigenvalues();
   }
+  std::vector<std::complex<double>> out;
+  for (Eigen::Index i = 0; i < eigenvalues.size(); ++i)
+    if (eigenvalues[i].imag() >= 0.0) out.push_back(w * eigenvalues[i]);
+  return out;
+}
+
+std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
   std::vector<double> out;
-  for (Eigen::Index i = 0; i < eigenvalues.size(); ++i) {
-    const auto l = eigenvalues[i];
-    if (std::abs(l.real()) <= kImagTolerance * std::abs(l) + 1e-14 && l.imag() >= 0.0) out.push_back(w * l.imag());
-  }
+  for (const auto l : hamiltonian_eigenvalues(ss))
+    if (near_axis(l)) out.push_back(l.imag());
   std::sort(out.begin(), out.end());
   return out;
 }
 
 PassivityResult hamiltonian_passivity(const StateSpace& ss, const RealPartFn& re, double scan_lo, double scan_hi,
-                                      bool scan) {
+                                      bool scan, const std::vector<FeatureWindow>& features) {
   const double scale = model_scale(ss, re, scan_lo, scan_hi);
-  PassivityResult r = decide(ss, re, scale, scan_lo, scan_hi);
-  if (scan) {
-    scan_minimum(r, re, scan_lo, scan_hi, ss.D);
-  } else {
-    r.min_re = ss.D, r.min_at = kInf;
-    for (const auto& b : r.bands)
-      if (b.min_re < r.min_re) r.min_re = b.min_re, r.min_at = b.at;
-  }
-  return r;
+  return decide(ss, re, scale, scan_lo, scan_hi, features, scan ? kNetPerDecade : kLoopNetPerDecade);
+}
+
+std::vector<FeatureWindow> resonance_windows(const Order& order, const double* theta) {
+  std::vector<FeatureWindow> out;
+  for (int k = 0; k < order.s(); ++k)
+    out.push_back({std::abs(theta[order.beta(k)]), theta[order.alpha(k)]});
+  return out;
 }
 
 PassivityResult continuous_passivity(const Order& order, const double* theta) {
@@ -288,13 +351,13 @@ PassivityResult continuous_passivity(const Order& order, const double* theta) {
     r.min_re = ss.D;
     r.min_at = 0.0;
     if (ss.D < 0.0) r.bands.push_back({0.0, kInf, ss.D, 0.0});
+    r.passive = r.bands.empty();
   } else {
     const auto [lo, hi] = pole_range(order, theta);
     ADMITGEN_ENSURE(lo > 0.0, "continuous passivity needs a causal model (every lambda, alpha > 0)");
-    r = decide(ss, re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi);
-    scan_minimum(r, re, 1e-3 * lo, 1e3 * hi, ss.D);
+    r = decide(ss, re, multipole_bound(order, theta), 1e-3 * lo, 1e3 * hi, resonance_windows(order, theta),
+               kNetPerDecade, [&](const std::vector<double>& w) { return re_multipole_at(order, theta, w); });
   }
-  r.passive = r.bands.empty();
   const auto hz = [](double w) { return w / (2.0 * kPi); };
   for (auto& c : r.crossings) c = hz(c);
   for (auto& b : r.bands) b.lo = hz(b.lo), b.hi = hz(b.hi), b.at = hz(b.at);
@@ -321,7 +384,7 @@ bool is_passive(const Order& order, const double* theta) {
   if (g0 < 0.0) return false;
   const RealPartFn re = [&](double w) { return re_multipole(order, theta, w); };
   const auto [lo, hi] = pole_range(order, theta);
-  return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), 0.1 * lo, 10.0 * hi,
+  return decide(continuous_realisation(order, theta), re, multipole_bound(order, theta), 0.1 * lo, 10.0 * hi, {},
                 kFitterNetPerDecade)
       .passive;
 }

@@ -7,11 +7,14 @@
 ///   M = [ A − B R⁻¹ C      −B R⁻¹ Bᵀ          ]      R = D + Dᵀ = 2D,
 ///       [ Cᵀ R⁻¹ C        −Aᵀ + Cᵀ R⁻¹ Bᵀ     ]      jω₀ ∈ eig(M)  ⇔  Re G(jω₀) = 0.
 ///
-/// The crossings split [0, ∞) into intervals on which Re G has one sign; one evaluation per interval
-/// decides it, and every negative interval's edges are polished by bisection on Re G. When D ≈ 0 the
-/// reciprocal realisation of G(1/s) (A⁻¹, A⁻¹B, −CA⁻¹, G(0)) is tested instead (PR is invariant under
-/// s → 1/s; crossings map ω ↔ 1/ω); when both G(∞) and G(0) vanish, G + ε is tested (ε = 1e-6 of the
-/// model's scale; the result then proves Re G ≥ −ε and says so).
+/// The crossings split [0, ∞) into intervals on which Re G has one sign. Re G is evaluated at every crossing
+/// candidate, the midpoint of each gap, a dense log net, and windows around every pair's resonance and every
+/// eigenvalue near the axis (two crossings closer than rounding resolves leave the axis as a pair ±δ + jω_m);
+/// every local minimum of those samples is refined, and any value below 0 is a negative band whose edges are
+/// polished by bisection (docs/passivity.md, "What the certificate guarantees"). When D ≈ 0 the reciprocal
+/// realisation of G(1/s) (A⁻¹, A⁻¹B, −CA⁻¹, G(0)) supplies the eigenvalues (PR is invariant under s → 1/s);
+/// when both G(∞) and G(0) vanish, G + ε does (ε = 1e-6 of the model's scale); the sign is always that of
+/// Re G itself.
 ///
 /// Discrete filters (what is emitted) are tested by the same decision through the bilinear map
 /// z = (1 + s)/(1 − s) (checks/passivity.hpp), crossings at θ = 2 atan ω.
@@ -20,6 +23,7 @@
 #include "model/order.hpp"
 #include "model/state_space.hpp"
 
+#include <complex>
 #include <functional>
 #include <string>
 #include <vector>
@@ -45,17 +49,30 @@ struct PassivityResult {
 /// Re G(jω) at a native frequency ω ≥ 0 (must be accurate: it decides the sign on each interval).
 using RealPartFn = std::function<double(double omega)>;
 
-/// Imaginary-axis eigenvalues ω ≥ 0 of the Hamiltonian of ss (R = 2D, D ≠ 0), ascending; eigenvalues with
-/// |Re λ| ≤ 1e-5 |λ| count (a tolerance that may add candidates, which the sign evaluation then discards,
-/// but does not lose crossings to rounding).
+/// A frequency window where Re G can vary quickly (a pair's resonance: centre β, half width α), sampled densely
+/// by the certificate (31 points spaced as resonance_points). Native frequency units.
+struct FeatureWindow {
+  double centre = 0.0, half = 0.0;
+};
+
+/// Eigenvalues λ (Im λ ≥ 0) of the Hamiltonian of ss (R = 2D, D ≠ 0), native frequency units.
+std::vector<std::complex<double>> hamiltonian_eigenvalues(const StateSpace& ss);
+
+/// Imaginary-axis eigenvalues ω ≥ 0 of the Hamiltonian of ss, ascending; eigenvalues with
+/// |Re λ| ≤ 1e-5 |λ| count (a tolerance that may add candidates, which the sign evaluation then discards).
+/// Crossings lost to rounding (two crossings closer than it resolves) are found by the decision's windows.
 std::vector<double> hamiltonian_crossings(const StateSpace& ss);
 
-/// The exact test of a stable realisation (native frequency ω, rad/s for a continuous G).
-/// `scan_lo`..`scan_hi` bound the dense scan that only feeds the reported minimum; `scan_minimum` false
-/// skips that scan (min_re/min_at then come from D and the negative bands only; the decision and the
-/// bands are the same; for certifiers in a loop).
+/// The test of a stable realisation (native frequency ω, rad/s for a continuous G); docs/passivity.md, "What
+/// the certificate guarantees". `scan_lo`..`scan_hi` bound the net of direct evaluations (200 points per decade,
+/// the reported minimum's scan; `scan_minimum` false: 32, for certifiers in a loop whose result is certified
+/// again). `features`: windows sampled densely besides those of the Hamiltonian's eigenvalues. Passive only if
+/// no evaluated Re G is below 0 (no tolerance).
 PassivityResult hamiltonian_passivity(const StateSpace& ss, const RealPartFn& re, double scan_lo, double scan_hi,
-                                      bool scan_minimum = true);
+                                      bool scan_minimum = true, const std::vector<FeatureWindow>& features = {});
+
+/// The resonance windows of a multipole's pairs (centre |β_s|, half width α_s; rad/s).
+std::vector<FeatureWindow> resonance_windows(const Order& order, const double* theta);
 
 /// Continuous multipole G (θ packed as model/order.hpp); frequencies in Hz. Requires λ, α > 0.
 PassivityResult continuous_passivity(const Order& order, const double* theta);

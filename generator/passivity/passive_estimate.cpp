@@ -2,6 +2,7 @@
 #include "passivity/passive_estimate.hpp"
 
 #include "core/errors.hpp"
+#include "model/multipole.hpp"
 #include "model/passivity.hpp"
 #include "passivity/passive_residues.hpp"
 #include "passivity/pole_refit.hpp"
@@ -23,11 +24,11 @@ bool better(const PassiveEstimate& a, const PassiveEstimate& b) {
 /// The estimate from the poles of one sample (docs/passivity.md, "Passive estimate"): the sample itself
 /// when it is passive, else its residues refitted under Re G ≥ 0.
 PassiveEstimate from_sample(const Order& order, const Eigen::VectorXd& sample, int rank, const ResidueTarget& target,
-                            const Likelihood& likelihood) {
+                            const Likelihood& likelihood, bool keep_passive = true) {
   PassiveEstimate e;
   e.candidate_rank = rank;
   const PassivityResult as_is = continuous_passivity(order, sample.data());
-  if (as_is.passive) {
+  if (as_is.passive && keep_passive) {
     e.theta = sample;
     e.certified = true;
     e.min_re = as_is.min_re;
@@ -131,15 +132,17 @@ const numerics::PassiveBound& LazyPassiveBound::get() const {
 
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
                                  const std::vector<Eigen::VectorXd>& candidates, DataCount count, int starts,
-                                 const LazyPassiveBound* bound) {
+                                 const LazyPassiveBound* bound, double admittance_scale) {
   ADMITGEN_ENSURE(!candidates.empty(), "passive estimate of {}: no samples", order.name());
   const Likelihood likelihood(data, order, count);
   const double data_norm2 = data.y.abs2().sum();
   const auto rel_rms = [&](const Eigen::VectorXd& th) {
     return std::sqrt(likelihood.sum_squared_residual(th.data()) / data_norm2);
   };
-  // The likelihood weighs every point's complex residual equally: unit weights.
-  const ResidueTarget target{data.omega(), data.y, Eigen::ArrayXd::Ones(data.size())};
+  // The likelihood weighs every point's complex residual equally: unit weights; the prior's rows weigh each
+  // residue by σ/s_k, σ the best sample's RMS residual per real component (the noise the likelihood infers).
+  const double sigma = std::sqrt(likelihood.sum_squared_residual(candidates.front().data()) / (2.0 * data.size()));
+  const ResidueTarget target{data.omega(), data.y, Eigen::ArrayXd::Ones(data.size()), sigma, admittance_scale};
   std::vector<PassiveEstimate> tried;
   const int n = std::min<int>(PassiveEstimate::kCandidates, static_cast<int>(candidates.size()));
   for (int k = 0; k < n; ++k) {
@@ -156,9 +159,39 @@ PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
     }
     best.sampled_poles_relative_rms_residual = rel_rms(tried.front().theta);
   }
+  const auto kappa = [&](const PassiveEstimate& e) { return term_conditioning(order, e.theta, data.omega()); };
+  if (kappa(best) > PassiveEstimate::kMaxConditioning && order.buffers() > 0) {
+    // Ill-conditioned (docs/passivity.md, "Conditioning"): the MAP residues of the best samples, passive or not,
+    // and the pole search from them; the most likely certified one within kMaxConditioning is taken when it fits
+    // within kConditioningCost of the estimate's residual, else the trade-off is stated.
+    const double rms = rel_rms(best.theta);
+    const int samples = std::min(std::max(starts, 1), n);
+    std::optional<PassiveEstimate> well;
+    for (int k = 0; k < samples; ++k) {
+      const PassiveEstimate map =
+          from_sample(order, candidates[static_cast<std::size_t>(k)], k, target, likelihood, false);
+      for (const PassiveEstimate& e : {map, starts > 0 ? searched(order, map, target, likelihood) : map})
+        if (e.certified && kappa(e) <= PassiveEstimate::kMaxConditioning && (!well || better(e, *well))) well = e;
+    }
+    if (well && rel_rms(well->theta) <= PassiveEstimate::kConditioningCost * rms) {
+      best = *well;
+      best.sampled_poles_relative_rms_residual = rel_rms(tried.front().theta);
+    } else {
+      best.conditioning_tradeoff =
+          well ? fmt::format("the best certified estimate within conditioning {:g} fits at {:.3g} % ({:.2f}x this one's "
+                             "residual, more than {:g}x): emit uses this one",
+                             PassiveEstimate::kMaxConditioning, 100.0 * rel_rms(well->theta), rel_rms(well->theta) / rms,
+                             PassiveEstimate::kConditioningCost)
+               : fmt::format("no certified estimate within conditioning {:g} was found from the {} best samples: emit "
+                             "uses this one",
+                             PassiveEstimate::kMaxConditioning, samples);
+    }
+  }
   best.best_sample_log_likelihood = likelihood(candidates.front().data());
   best.best_sample_relative_rms_residual = rel_rms(candidates.front());
   best.relative_rms_residual = rel_rms(best.theta);
+  best.conditioning = kappa(best);
+  best.best_sample_conditioning = term_conditioning(order, candidates.front(), data.omega());
   if (best.relative_rms_residual > PassiveEstimate::kCostRatio * best.best_sample_relative_rms_residual) {
     const numerics::PassiveBound* b = bound != nullptr ? &bound->get() : nullptr;
     if (b != nullptr) best.passive_bound_relative_rms_residual = b->relative_rms_residual;
@@ -172,6 +205,16 @@ DataPassivity data_passivity(const Measurement& data) {
   d.min_re = data.y.real().minCoeff();
   d.negative_points = static_cast<int>((data.y.real() < 0.0).count());
   return d;
+}
+
+std::string conditioning_warning(const Order& order, const PassiveEstimate& e) {
+  if (!(e.conditioning > PassiveEstimate::kMaxConditioning)) return {};
+  return fmt::format("the passive estimate of {} is ill-conditioned: its terms sum to {:.3g}x max |G| in band (the best "
+                     "sample: {:.3g}x), so a fixed-point header loses {:.1f} bits to cancellation; {}; emit's fidelity "
+                     "check proves whether a q15 header still matches the model, and a smaller order avoids it",
+                     order.name(), e.conditioning, e.best_sample_conditioning, std::log2(e.conditioning),
+                     e.conditioning_tradeoff.empty() ? "no better-conditioned passive estimate was found"
+                                                     : e.conditioning_tradeoff);
 }
 
 std::string passivity_cost_warning(const Order& order, const PassiveEstimate& e) {

@@ -13,6 +13,7 @@
 
 #include "data/measurement.hpp"
 #include "inference/likelihood.hpp"
+#include "inference/priors.hpp"
 #include "model/order.hpp"
 #include "numerics/passive_bound.hpp"
 
@@ -73,17 +74,35 @@ struct PassiveEstimate {
   /// Why passivity costs more than kCostRatio in residual (empty otherwise): where the best sample is not
   /// passive, whether the data are, and what the passive bound allows.
   std::string cost_reason;
+  /// term_conditioning (model/multipole.hpp) of theta over the data frequencies, and of the best sample.
+  double conditioning = 1.0;
+  double best_sample_conditioning = 1.0;
+  /// Above this conditioning fit warns (docs/passivity.md, "Conditioning"): 10 costs log2 10 = 3.3 of a q15
+  /// table's 15 bits.
+  static constexpr double kMaxConditioning = 10.0;
+  /// An ill-conditioned estimate is replaced by the most likely certified one within kMaxConditioning when that
+  /// fits within this factor of its relative RMS residual.
+  static constexpr double kConditioningCost = 1.1;
+  /// Why an estimate above kMaxConditioning was kept (conditioning against residual); empty otherwise.
+  std::string conditioning_tradeoff;
   /// The passive bound of the data (numerics/passive_bound.hpp), when cost_reason was stated with it.
   std::optional<double> passive_bound_relative_rms_residual;
 };
 
 /// `candidates`: samples of the order in descending likelihood (θ packed as model/order.hpp); the first
-/// kCandidates are tried. changed = false when the chosen one was passive as sampled. `starts` of the pole
+/// kCandidates are tried. The residues are the MAP under the fit's Gaussian residue prior of `admittance_scale`
+/// and Re G ≥ 0, with σ the best sample's RMS residual per real component (docs/passivity.md, "Under the residue
+/// prior"). changed = false when the chosen one was passive as sampled. `starts` of the pole
 /// search (0: the sampled poles only, as before the search existed; for measuring what it gains). `bound`, when
 /// given, is the data's passive bound, asked for only when passivity costs more than kCostRatio.
 PassiveEstimate passive_estimate(const Measurement& data, const Order& order,
                                  const std::vector<Eigen::VectorXd>& candidates, DataCount count,
-                                 int starts = PassiveEstimate::kStarts, const LazyPassiveBound* bound = nullptr);
+                                 int starts = PassiveEstimate::kStarts, const LazyPassiveBound* bound = nullptr,
+                                 double admittance_scale = kDefaultAdmittanceScale);
+
+/// One line for the terminal and fit.json's warnings when the estimate's conditioning exceeds kMaxConditioning:
+/// what it costs a fixed-point header and the fix. Empty otherwise.
+std::string conditioning_warning(const Order& order, const PassiveEstimate& e);
 
 /// Share of data points with Re y < 0 (a passive wall has Re y ≥ 0) and the most negative Re y.
 struct DataPassivity {

@@ -3,6 +3,8 @@
 
 #include "core/errors.hpp"
 #include "core/log_grid.hpp"
+#include "inference/pole_space.hpp"
+#include "inference/priors.hpp"
 #include "model/passivity.hpp"
 #include "model/residue_basis.hpp"
 #include "numerics/least_squares_inequality.hpp"
@@ -41,16 +43,29 @@ void add_violations(const PassivityResult& r, std::vector<double>& omega) {
 
 }  // namespace
 
+Eigen::VectorXd prior_row_weights(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t) {
+  Eigen::VectorXd sd(residue_count(order));
+  if (t.noise_sd <= 0.0) return Eigen::VectorXd::Zero(sd.size());
+  std::vector<double> poles;
+  for (const int i : pole_indices(order)) poles.push_back(theta[i]);
+  gaussian_residue_scales(order, poles.data(), t.admittance_scale, sd.data());
+  return t.noise_sd * sd.cwiseInverse();
+}
+
 void weighted_system(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t, Eigen::MatrixXd& e,
                      Eigen::VectorXd& f) {
   const ResidueBasis b = residue_basis(order, theta, t.omega);
-  const Eigen::Index n = t.omega.size(), p = b.re.cols();
-  e.resize(2 * n, p);
-  f.resize(2 * n);
+  const Eigen::Index n = t.omega.size(), p = b.re.cols(), extra = t.noise_sd > 0.0 ? p : 0;
+  e.resize(2 * n + extra, p);
+  f.resize(2 * n + extra);
   e.topRows(n) = t.weights.matrix().asDiagonal() * b.re;
-  e.bottomRows(n) = t.weights.matrix().asDiagonal() * b.im;
+  e.middleRows(n, n) = t.weights.matrix().asDiagonal() * b.im;
   f.head(n) = (t.weights * t.values.real()).matrix();
-  f.tail(n) = (t.weights * t.values.imag()).matrix();
+  f.segment(n, n) = (t.weights * t.values.imag()).matrix();
+  if (extra > 0) {
+    e.bottomRows(extra) = prior_row_weights(order, theta, t).asDiagonal();
+    f.tail(extra).setZero();
+  }
 }
 
 std::vector<double> constraint_grid(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& t) {

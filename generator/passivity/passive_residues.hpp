@@ -25,11 +25,17 @@
 
 namespace admitgen::passivity {
 
-/// What the residues are fitted to: complex values t at angular frequencies ω (rad/s), weights w ≥ 0.
+/// What the residues are fitted to: complex values t at angular frequencies ω (rad/s), weights w ≥ 0, and
+/// optionally the fit's Gaussian residue prior (docs/passivity.md, "Under the residue prior").
 struct ResidueTarget {
   Eigen::ArrayXd omega;
   Eigen::ArrayXcd values;
   Eigen::ArrayXd weights;
+  /// σ of the weighted residual per real component; > 0 adds the prior r_k ~ N(0, s_k²) (s_k of
+  /// inference/priors.hpp, gaussian_residue_scales, at admittance_scale) as the rows σ r_k / s_k, so the
+  /// least squares become the MAP residues under the constraints. 0: unpenalised least squares.
+  double noise_sd = 0.0;
+  double admittance_scale = 1.0;
 };
 
 struct PassiveResidues {
@@ -53,9 +59,13 @@ double constraint_margin(const ResidueTarget& target, double fraction);
 /// rate). The certificate adds whatever this misses.
 std::vector<double> constraint_grid(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
 
-/// The weighted least-squares system of the residues, [w Re Φ; w Im Φ] r ≈ [w Re t; w Im t] (2N rows).
+/// The weighted least-squares system of the residues, [w Re Φ; w Im Φ] r ≈ [w Re t; w Im t] (2N rows), plus,
+/// when target.noise_sd > 0, the prior's rows diag(σ/s_k) r ≈ 0 (residue_count(order) more rows).
 void weighted_system(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target, Eigen::MatrixXd& e,
                      Eigen::VectorXd& f);
+
+/// σ/s_k of the prior's rows for theta's poles (zeros when target.noise_sd = 0), residue_basis order.
+Eigen::VectorXd prior_row_weights(const Order& order, const Eigen::VectorXd& theta, const ResidueTarget& target);
 
 /// Residues of `theta`'s poles (its residues are ignored) closest to `target` subject to passivity.
 /// Requires every λ, α > 0. Not certified only if the rounds of every margin are exhausted or the solve fails

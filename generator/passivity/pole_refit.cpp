@@ -109,7 +109,7 @@ Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const 
   weighted_system(order, theta, target, e, f);
   const Eigen::Index n = target.omega.size();
   Linearisation l;
-  l.j.resize(2 * n, p + m);
+  l.j = Eigen::MatrixXd::Zero(e.rows(), p + m);
   l.j.leftCols(p) = e;
   ResidueBasis d = pole_derivatives(order, theta, target.omega);
   to_step_coordinates(order, theta, d.re);
@@ -117,6 +117,15 @@ Linearisation linearise(const Order& order, const Eigen::VectorXd& theta, const 
   l.j.block(0, p, n, m) = target.weights.matrix().asDiagonal() * d.re;
   l.j.block(n, p, n, m) = target.weights.matrix().asDiagonal() * d.im;
   const Eigen::VectorXd r = residues_of(order, theta);
+  if (e.rows() > 2 * n) {
+    // The prior's rows σ r_k / s_k: s_A,q ∝ λ_q and s_B,s = s_C,s ∝ α_s, so ∂/∂ ln λ_q (∂/∂ ln α_s) of the
+    // row is minus the row (docs/passivity.md, "Under the residue prior").
+    const Eigen::VectorXd rows = prior_row_weights(order, theta, target).cwiseProduct(r);
+    for (int q = 0; q < order.q(); ++q) l.j(2 * n + 1 + q, p + q) = -rows[1 + q];
+    for (int s = 0; s < order.s(); ++s)
+      for (int k = 0; k < 2; ++k)
+        l.j(2 * n + 1 + order.q() + 2 * s + k, p + order.q() + 2 * s) = -rows[1 + order.q() + 2 * s + k];
+  }
   l.eps = f - e * r;
   const std::vector<double> grid = constraint_grid(order, theta, target);
   const Eigen::ArrayXd w = Eigen::Map<const Eigen::ArrayXd>(grid.data(), Eigen::Index(grid.size()));

@@ -136,8 +136,8 @@ std::string evidence_table(const FitRecord& fit) {
   const bool lower_bound = fit.log_evidence_error_meaning && fit.log_evidence_error_meaning->find("lower bound") != std::string::npos;
   Table t{{"order", "buffers", "ln Z", lower_bound ? "± σ (lower bound)" : "± σ", "Bayes factor [dB]", "± σ [dB]",
            "max ln L", "rel. RMS residual", "max |Δα|", "passive: rel. RMS", "passive: max |Δα| per band",
-           "meets target"},
-          {}, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, {}, {}};
+           "meets target", "conditioning"},
+          {}, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12}, {}, {}};
   const std::string& selected = fit.selected_order;
   for (const auto& m : fit.models) {
     const std::string& order = m.order;
@@ -147,7 +147,8 @@ std::string evidence_table(const FitRecord& fit) {
                       goodness(m, &FitGoodness::relative_rms_residual), goodness(m, &FitGoodness::max_abs_delta_alpha),
                       accuracy(m, &FitAccuracy::relative_rms_residual, 3),
                       accuracy(m, &FitAccuracy::max_band_delta_alpha, 3),
-                      m.accuracy ? (m.accuracy->meets_target ? "yes" : "no") : "—"});
+                      m.accuracy ? (m.accuracy->meets_target ? "yes" : "no") : "—",
+                      accuracy(m, &FitAccuracy::conditioning, 3)});
     t.row_classes.push_back(order == selected ? "selected" : "");
   }
   t.caption = fmt::format(
@@ -155,7 +156,7 @@ std::string evidence_table(const FitRecord& fit) {
       "10:1 against, −20 dB 100:1 (decisive). Buffers: state variables of the filter (Q + 2S). Goodness of fit at "
       "each order's maximum-likelihood parameters: relative RMS residual ‖D − G‖/‖D‖ of the complex admittance and "
       "the largest absorption error max |Δα| over the data frequencies. Passive: the same of each order's passive "
-      "estimate (what emit ships), |Δα| as its largest in any one-third-octave band; it meets the target {}. {}"
+      "estimate (what emit ships), |Δα| as its largest in any one-third-octave band; it meets the target {}; conditioning: Σ over terms of max |term| / max |G| over the data band (docs/passivity.md). {}"
       "Selection rule: {}.",
       fit.settings.target ? "|Δα| ≤ " + number(fit.settings.target->max_band_delta_alpha, 3) : std::string("—"),
       fit.log_evidence_error_meaning ? "Error of ln Z: " + escape_xml(*fit.log_evidence_error_meaning) + ". " : std::string(),

@@ -22,7 +22,8 @@ void estimate_passive(const Measurement& data, const FitSettings& settings, std:
   run_in_parallel(orders, settings.threads, [&](std::size_t i) {
     auto& m = models[i];
     m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
-                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound);
+                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound,
+                                            settings.priors.admittance_scale);
     m.accuracy = order_accuracy(data, m.order, m.passive.theta, settings.target);
   });
 }

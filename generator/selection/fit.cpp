@@ -641,6 +641,9 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   if (const auto w = passivity::passivity_cost_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
       !w.empty())
     fit.warnings.push_back(w);
+  if (const auto w = passivity::conditioning_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
+      !w.empty())
+    fit.warnings.push_back(w);
   if (const auto d = passivity::data_passivity(data); d.negative_points > 0)
     fit.warnings.push_back(fmt::format(
         "the data are not passive at {} of {} points (Re y down to {:.3g}; a wall cannot return more energy than it "

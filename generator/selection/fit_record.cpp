@@ -80,7 +80,8 @@ FitPassiveEstimate passive_record(const ModelResult& m) {
   FitPassiveEstimate r;
   r.poles_from = e.poles_searched ? passivity::PassiveEstimate::kPolesSearched : passivity::PassiveEstimate::kPolesFrom;
   r.sample_rank = e.candidate_rank;
-  r.residues = e.changed ? "refitted: least squares to the data subject to Re G >= 0 at every frequency"
+  r.residues = e.changed ? "refitted: least squares to the data under the Gaussian residue prior (MAP) subject to Re G >= 0 at "
+                           "every frequency"
                          : "those of the sample (already passive)";
   const auto names = m.order.parameter_names();
   for (std::size_t i = 0; i < names.size(); ++i) r.parameters.emplace_back(names[i], e.theta[static_cast<Eigen::Index>(i)]);
@@ -97,6 +98,9 @@ FitPassiveEstimate passive_record(const ModelResult& m) {
   }
   if (!e.cost_reason.empty()) r.passivity_cost = e.cost_reason;
   r.passive_bound_relative_rms_residual = e.passive_bound_relative_rms_residual;
+  r.conditioning = e.conditioning;
+  r.best_sample_conditioning = e.best_sample_conditioning;
+  if (!e.conditioning_tradeoff.empty()) r.conditioning_tradeoff = e.conditioning_tradeoff;
   return r;
 }
 
@@ -120,7 +124,7 @@ FitModel model_record(const ModelResult& m, const Measurement& data) {
   r.goodness_of_fit = FitGoodness{"max_likelihood", g.relative_rms, g.max_abs_delta_alpha};
   if (m.accuracy)
     r.accuracy = FitAccuracy{m.order.buffers(), m.accuracy->relative_rms, m.accuracy->max_band_delta_alpha,
-                             m.accuracy->worst_band_hz, m.accuracy->meets};
+                             m.accuracy->worst_band_hz, m.accuracy->meets, m.passive.conditioning};
   r.sampler = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
   if (!m.sampler_note.empty()) r.sampler_note = m.sampler_note;
   return r;

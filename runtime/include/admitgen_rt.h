@@ -188,7 +188,10 @@ typedef struct admitgen_rt_model_q31 {
   const int32_t *pair;
 } admitgen_rt_model_q31;
 
-/** Q15 model: as Q31 with B = 15 and int16 tables (shifts stored in the same int16 tables). */
+/** Q15 model: as Q31 with B = 15 and int16 tables (shifts stored in the same int16 tables); or, "q15 with 32-bit
+ *  coefficients" (docs/runtime.md, "Q formats and rounding"), B = 31 and int32 tables in fir32/real32/pair32 (then
+ *  fir/real/pair are unused and NULL): Q1.15 data, the q31 coefficient tables, the same 64-bit kernel (the
+ *  generator chooses it when 16-bit coefficients cannot hold a model, as CMSIS-DSP's 32x64 biquads do). */
 typedef struct admitgen_rt_model_q15 {
   uint32_t abi_version;
   int32_t fs_hz;
@@ -199,6 +202,9 @@ typedef struct admitgen_rt_model_q15 {
   const int16_t *fir;
   const int16_t *real;
   const int16_t *pair;
+  const int32_t *fir32;  /**< NULL: 16-bit coefficients (fir/real/pair); set: 32-bit coefficients, B = 31 */
+  const int32_t *real32;
+  const int32_t *pair32;
 } admitgen_rt_model_q15;
 
 /* ------------------------------------------------------------------------------------------------ */

@@ -16,10 +16,12 @@ size_t admitgen_rt_state_bytes_q15(const admitgen_rt_model_q15 *model, int32_t n
 
 /* The model's own consistency (docs/runtime.md, "Limits and misuse"), before anything reads its tables. */
 static admitgen_rt_result admitgen_rt__check_model_q15(const admitgen_rt_model_q15 *m) {
-  const admitgen_rt_result r = admitgen_rt__check_tables(m->n_fir, m->n_real, m->n_pair, m->fir, m->real, m->pair);
+  const admitgen_rt_result r =
+      m->fir32 != NULL ? admitgen_rt__check_tables(m->n_fir, m->n_real, m->n_pair, m->fir32, m->real32, m->pair32)
+                       : admitgen_rt__check_tables(m->n_fir, m->n_real, m->n_pair, m->fir, m->real, m->pair);
   if (r != ADMITGEN_RT_SUCCESS) return r;
   {
-    const admitgen_rt__qtab t = {NULL, NULL, NULL, m->fir, m->real, m->pair, m->n_fir, m->n_real, m->n_pair, 15, m->acc_shift};
+    const admitgen_rt__qtab t = admitgen_rt__q15_tab(m);
     return admitgen_rt__check_qmodel(&t);
   }
 }

@@ -147,6 +147,17 @@ typedef struct admitgen_rt__qtab {
   int32_t acc_shift; /* accumulator -> output */
 } admitgen_rt__qtab;
 
+/* The tables of a q15 model: 16-bit coefficients (B = 15), or 32-bit ones (B = 31) when fir32 is set. */
+static inline admitgen_rt__qtab admitgen_rt__q15_tab(const admitgen_rt_model_q15 *m) {
+  admitgen_rt__qtab t = {NULL, NULL, NULL, m->fir, m->real, m->pair, m->n_fir, m->n_real, m->n_pair, 15, m->acc_shift};
+  if (m->fir32 != NULL) {
+    t.fir32 = m->fir32, t.real32 = m->real32, t.pair32 = m->pair32;
+    t.fir16 = NULL, t.real16 = NULL, t.pair16 = NULL;
+    t.bits = 31;
+  }
+  return t;
+}
+
 static inline int32_t admitgen_rt__qfir(const admitgen_rt__qtab *t, int32_t k) {
   return t->fir32 != NULL ? t->fir32[k] : (int32_t)t->fir16[k];
 }

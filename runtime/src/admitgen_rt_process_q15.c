@@ -16,7 +16,7 @@
 void admitgen_rt__process_q15_isa(admitgen_rt_q15 *inst, const int16_t *pIn, int16_t *pOut, int32_t n_frames, int32_t stride,
                                   int isa) {
   const admitgen_rt_model_q15 *m = inst->model;
-  const admitgen_rt__qtab t = {NULL, NULL, NULL, m->fir, m->real, m->pair, m->n_fir, m->n_real, m->n_pair, 15, m->acc_shift};
+  const admitgen_rt__qtab t = admitgen_rt__q15_tab(m);
   const admitgen_rt__qio io = {NULL, pIn, NULL, pOut, stride};
   admitgen_rt__qcall(&t, inst->x, inst->xi, inst->eta, inst->hist, inst->n_nodes, &inst->head, &io, n_frames, 1, isa);
 }
@@ -31,7 +31,7 @@ admitgen_rt_result admitgen_rt_process_q15(admitgen_rt_q15 *inst, const int16_t 
 static void admitgen_rt__history_q15(const admitgen_rt_q15 *inst, int16_t *pHist) {
   /* one frame with u = 0 and commit 0: states and ring unchanged */
   const admitgen_rt_model_q15 *m = inst->model;
-  const admitgen_rt__qtab t = {NULL, NULL, NULL, m->fir, m->real, m->pair, m->n_fir, m->n_real, m->n_pair, 15, m->acc_shift};
+  const admitgen_rt__qtab t = admitgen_rt__q15_tab(m);
   const admitgen_rt__qio io = {NULL, NULL, NULL, pHist, inst->n_nodes};
   int32_t head = inst->head;
   admitgen_rt__qcall(&t, inst->x, inst->xi, inst->eta, inst->hist, inst->n_nodes, &head, &io, 1, 0, ADMITGEN_RT_ISA_BEST);

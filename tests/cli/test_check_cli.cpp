@@ -22,7 +22,7 @@ TEST_CASE("admitgen check: exit 0 for a good header and fit, 1 naming the failur
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.output);
   CHECK(j["schema"] == "admitgen.check/1");
-  CHECK(j["checks"].size() == 7);
+  CHECK(j["checks"].size() == 8);
   CHECK(test::run_admitgen("check '" + fit + "'").exit_code == 0);
 
   // At 24 kHz the most accurate refit is not passive above the data band (Re H < 0 over 8.2-8.7 kHz);

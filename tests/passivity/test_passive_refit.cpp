@@ -74,7 +74,8 @@ TEST_CASE("emit pipeline: every format and rate of the reference fit passes admi
   const std::string tpl = codegen::load_template("", "admitgen_boundary.h.in");
   for (auto format : {codegen::Format::f32, codegen::Format::q31, codegen::Format::q15}) {
     codegen::EmitSettings s;
-    s.fs_hz = {16000.0, 24000.0, 44100.0, 48000.0, 96000.0};
+    // (16 kHz is refused for this fit: its refit is 0.83 % off at 4 kHz = fs/4, tests/checks/test_catalogue.cpp.)
+    s.fs_hz = {24000.0, 44100.0, 48000.0, 96000.0};
     s.format = format;
     s.name = "wall";
     const auto r = emit::emit(fit, "q1s1_reference.json", s, tpl, "wall.h");
