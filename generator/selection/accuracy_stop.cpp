@@ -76,6 +76,12 @@ std::string target_missed_warning(const FitSettings& settings, const std::vector
       "no fitted order meets the accuracy target ({}): the selected {} misses it most in the {:.0f} Hz band (|Δα| = "
       "{:.3f}, relative RMS {:.3g})", settings.target.describe(), sel.order.name(), a.worst_band_hz,
       a.max_band_delta_alpha, a.relative_rms);
+  // A residual without correlation along frequency is the measurement's noise: no order follows it.
+  constexpr double kNoiseLag1 = 0.5;
+  if (a.residual_lag1 < kNoiseLag1)
+    return fmt::format("{}: the residual there is noise (its lag-1 autocorrelation over frequency is {:.2f}), which "
+                       "alone moves α by that much at single points; no order can meet a target below the data's "
+                       "noise: relax {}", missed, a.residual_lag1, setting("target.max_band_delta_alpha"));
   // A spike of at most kSpikePoints points is narrower than any pole pair the data can resolve: an artefact of the
   // measurement more likely than a feature of the material.
   constexpr int kSpikePoints = 3;

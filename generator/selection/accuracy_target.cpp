@@ -58,20 +58,24 @@ OrderAccuracy order_accuracy(const Measurement& data, const Order& order, const 
   const Eigen::ArrayXcd g = evaluate_multipole(order, theta, data.omega());
   OrderAccuracy out;
   out.relative_rms = std::sqrt((data.y - g).abs2().sum() / data.y.abs2().sum());
+  const Eigen::ArrayXcd r = data.y - g;
+  if (r.size() > 1 && r.abs2().sum() > 0.0)
+    out.residual_lag1 =
+        (r.head(r.size() - 1) * r.tail(r.size() - 1).conjugate()).real().sum() / r.abs2().sum();
   Eigen::Index at = -1;
   out.max_band_delta_alpha = max_in_bands(data.f_hz, absorption(g), absorption(data.y), &at);
   if (at >= 0) {
     out.worst_band_hz = band_center(band_index(data.f_hz(at)));
     // The residual's peak inside the worst band, and its width at half height.
-    const Eigen::ArrayXd r = (data.y - g).abs();
+    const Eigen::ArrayXd size = r.abs();
     const double f_lo = out.worst_band_hz * std::pow(10.0, -0.05), f_hi = out.worst_band_hz * std::pow(10.0, 0.05);
     Eigen::Index peak = -1;
     for (Eigen::Index i = 0; i < data.size(); ++i)
-      if (data.f_hz(i) >= f_lo && data.f_hz(i) < f_hi && (peak < 0 || r(i) > r(peak))) peak = i;
+      if (data.f_hz(i) >= f_lo && data.f_hz(i) < f_hi && (peak < 0 || size(i) > size(peak))) peak = i;
     if (peak >= 0) {
       Eigen::Index lo = peak, hi = peak;
-      while (lo > 0 && r(lo - 1) > 0.5 * r(peak)) --lo;
-      while (hi + 1 < data.size() && r(hi + 1) > 0.5 * r(peak)) ++hi;
+      while (lo > 0 && size(lo - 1) > 0.5 * size(peak)) --lo;
+      while (hi + 1 < data.size() && size(hi + 1) > 0.5 * size(peak)) ++hi;
       out.peak_hz = data.f_hz(peak);
       out.peak_width_hz = data.f_hz(hi) - data.f_hz(lo);
       out.peak_points = static_cast<int>(hi - lo + 1);
