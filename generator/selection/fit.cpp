@@ -15,6 +15,7 @@
 #include "selection/reduced_model.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -265,9 +266,13 @@ bool pole_sampled(const ModelResult& m) { return m.sampler == kPoleSamplerName; 
 /// poles against the larger's.
 std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const FitSettings& settings,
                                               const std::vector<ModelResult>& models, double tolerance) {
+  // One marginal per order, shared by its peak and every pair it takes part in.
+  std::deque<ResidueEvidence> evidence;
   std::vector<MarginalPeak> peak;
-  for (const ModelResult& m : models)
-    peak.push_back(marginal_peak(data, m.order, m.run, m.live, settings.priors, settings.data_count));
+  for (const ModelResult& m : models) {
+    evidence.emplace_back(data, m.order, settings.data_count, settings.priors.admittance_scale);
+    peak.push_back(marginal_peak(evidence.back(), m.order, m.run, m.live));
+  }
   std::vector<std::optional<MissedMode>> worst(models.size());
   const auto flag = [&](std::size_t order, std::size_t shown, double log_l, bool larger) {
     if (log_l > peak[order].log_l + tolerance && (!worst[order] || log_l > worst[order]->reference_log_l))
@@ -281,9 +286,8 @@ std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const Fit
         continue;
       const double* theta_small = models[small].run.point(peak[small].row);
       const double* theta_big = models[big].run.point(peak[big].row);
-      flag(small, big, reduced_log_marginal(data, s, b, theta_big, settings.priors, settings.data_count), true);
-      flag(big, small,
-           completed_log_marginal(data, s, theta_small, b, theta_big, settings.priors, settings.data_count), false);
+      flag(small, big, reduced_log_marginal(evidence[small], s, b, theta_big), true);
+      flag(big, small, completed_log_marginal(evidence[big], s, theta_small, b, theta_big), false);
     }
   std::vector<MissedMode> missed;
   for (const auto& m : worst)
