@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
+#include "selection/missed_modes.hpp"
 
 #include <fmt/format.h>
 
@@ -38,7 +39,7 @@ std::size_t select_usable(const FitSettings& settings, const std::vector<ModelRe
     buffers.push_back(m.order.buffers());
     meets.push_back(m.accuracy && m.accuracy->meets);
     within.push_back(settings.max_buffers <= 0 || m.order.buffers() <= settings.max_buffers);
-    usable.push_back(within.back() && !(m.run.log_z_error > RerunCheck::kMaxGapNats));
+    usable.push_back(within.back() && !runs_disagree(m));
   }
   const bool any = std::find(usable.begin(), usable.end(), true) != usable.end();
   return settings.rule.select(log_z, error, buffers, meets, any ? usable : within);
@@ -50,7 +51,7 @@ std::string target_met_note(const Measurement& data, const FitSettings& settings
   if (!sel.accuracy || !sel.accuracy->meets) return {};
   std::size_t top = selected;
   for (std::size_t i = 0; i < models.size(); ++i)
-    if (!(models[i].run.log_z_error > RerunCheck::kMaxGapNats) && models[i].run.log_z > models[top].run.log_z) top = i;
+    if (!runs_disagree(models[i]) && models[i].run.log_z > models[top].run.log_z) top = i;
   const std::string met = fmt::format("{} already meets {}", sel.order.name(), settings.target.describe());
   if (top != selected) {
     const ModelResult& t = models[top];

@@ -148,7 +148,7 @@ std::string log_evidence_error_meaning(int runs) {
   if (runs > 1)
     return fmt::format("from the scatter of {} independent runs per order where it exceeds sqrt(H/n)", runs);
   return "sqrt(H/n) of one run, a lower bound: on real data the seed scatter of ln Z is 2-15 times larger; "
-         "fit with --runs 2 to measure it";
+         "two independent runs per order (runs = 2) measure it";
 }
 
 FitRecord fit_record(const Measurement& data, const ReadOptions& read, const FitSettings& given, const FitResult& fit) {

@@ -24,7 +24,7 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 
 }  // namespace
 
-TEST_CASE("accuracy stop: a missed target names noise, a spike or a feature; a met one gives no warning") {
+TEST_CASE("accuracy stop: a missed target names noise, a spike or a feature, a met one gives no warning") {
   const FitSettings settings;
   OrderAccuracy a;
   a.max_band_delta_alpha = 0.05;

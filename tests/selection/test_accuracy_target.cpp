@@ -30,7 +30,7 @@ struct Fixture {
 
 }  // namespace
 
-TEST_CASE("accuracy target: the model itself meets any target; one perturbed point sets the band and the figure") {
+TEST_CASE("accuracy target: the model itself meets any target, one perturbed point sets the band and the figure") {
   Fixture fx;
   const AccuracyTarget target{0.01, 0.0};
   const OrderAccuracy exact = order_accuracy(fx.data, fx.order, fx.theta, target);

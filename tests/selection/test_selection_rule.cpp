@@ -47,7 +47,7 @@ TEST_CASE("selection: simplest within a margin plus two errors of the difference
   CHECK(SelectionRule::parse("simplest:10").spelling() == "simplest:10");
 }
 
-TEST_CASE("selection: target ships the fewest buffers that meet it; undetermined or over-budget orders are never chosen") {
+TEST_CASE("selection: target ships the fewest buffers that meet it, undetermined or over-budget orders are never chosen") {
   // Indices: 0 = 4 buffers meets, 1 = 3 buffers misses, 2 = 9 buffers meets (best evidence), 3 = 2 buffers meets
   // but its runs disagree (unusable). Evidence as in the previous case.
   const std::vector<double> log_z{-2.5, -3.9, 0.0, -30.0};
