@@ -11,7 +11,6 @@
 #include "io/priors_file.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/fit.hpp"
-#include "selection/goodness_of_fit.hpp"
 
 #include <fmt/core.h>
 
@@ -22,18 +21,26 @@
 namespace admitgen::cli {
 namespace {
 
-/// The evidence table plus each order's goodness of fit (selection/goodness_of_fit.hpp: relative RMS
-/// residual and max |delta alpha| at the max-likelihood parameters).
-void print_summary(const FitResult& fit, const Measurement& data) {
+/// The evidence and cost/accuracy table (docs/cli.md, "fit"): per order ln Z and its error, the Bayes factor
+/// against the selected order, the buffers it costs per node, and its passive estimate's accuracy
+/// (selection/accuracy_target.hpp: relative RMS residual, max |delta alpha| per one-third-octave band, whether it
+/// meets the target) and its conditioning (docs/passivity.md, "Conditioning"). The error of ln Z is sqrt(H/n) of one run: a lower bound of the seed scatter, said below.
+void print_summary(const FitResult& fit, const FitSettings& settings) {
   const auto& best = fit.models[fit.selected];
-  fmt::print("{:<6} {:>12} {:>7} {:>10} {:>11} {:>9} {:>8} {:>8} {:>8}\n", "order", "ln Z", "± err", "BF [dB]", "calls",
-             "seconds", "buffers", "rel.rms", "max|Δα|");
+  fmt::print("{:<6} {:>12} {:>8} {:>10} {:>11} {:>9} {:>8} {:>8} {:>9} {:>6} {:>6}\n", "order", "ln Z", settings.runs < 2 ? "±≥err" : "± err", "BF [dB]",
+             "calls", "seconds", "buffers", "rel.rms", "band|Δα|", "target", "cond.");
   for (const auto& m : fit.models) {
-    const GoodnessOfFit g = goodness_of_fit(data, m);
-    fmt::print("{:<6} {:>12.2f} {:>7.2f} {:>10.1f} {:>11} {:>9.2f} {:>8} {:>8.4f} {:>8.4f}{}\n", m.order.name(),
+    const OrderAccuracy a = m.accuracy.value_or(OrderAccuracy{});
+    fmt::print("{:<6} {:>12.2f} {:>8.2f} {:>10.1f} {:>11} {:>9.2f} {:>8} {:>8.4f} {:>9.4f} {:>6} {:>6.3g}{}\n", m.order.name(),
                m.run.log_z, m.run.log_z_error, deciban(m.run.log_z, best.run.log_z), m.run.calls, m.seconds,
-               m.order.buffers(), g.relative_rms, g.max_abs_delta_alpha, &m == &best ? "  <- selected" : "");
+               m.order.buffers(), a.relative_rms, a.max_band_delta_alpha, a.meets ? "met" : "-", m.passive.conditioning,
+               &m == &best ? "  <- selected" : "");
   }
+  fmt::print("target: {} (the largest |Δα| of the passive estimate against the data in any one-third-octave band)\n",
+             settings.target.describe());
+  if (settings.runs < 2)
+    fmt::print("±≥err: sqrt(H/n) of one run, a lower bound: the seed scatter of ln Z on real data is 2-15 times larger; "
+               "--runs 2 measures it\n");
 }
 
 /// Removes the output directories this run created (deepest first, only while empty) unless kept:
@@ -93,7 +100,8 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
   sub->add_option("--threads,-j", s.threads, "Worker threads over orders (0 = all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024))->capture_default_str();
   add_parsed_option(*sub, "--select", s.rule, SelectionRule::parse,
-                    "Selection rule: simplest:DB (fewest buffers among the orders not below the best by more than DB deciban "
+                    "Selection rule: target (fewest buffers whose passive estimate meets --target-alpha; simplest:10 when "
+                    "none does), simplest:DB (fewest buffers among the orders not below the best by more than DB deciban "
                     "plus two errors), cheapest:DB (the same without the errors) or best (highest evidence)")
       ->default_str(s.rule.spelling());
   auto* prior = sub->add_option_function<std::string>(
@@ -137,6 +145,18 @@ void add_fit_options(CLI::App& app, ReadOptions& read, FitSettings& s) {
                   "Re-run orders whose best likelihood is below a nested order's; each round adds runs that double the "
                   "order's live points, merged with its run")
       ->check(CLI::Range(0, 6))->capture_default_str();
+  sub->add_option("--target-alpha", s.target.max_band_delta_alpha,
+                  "Accuracy target: the largest |delta alpha| per one-third-octave band of the passive estimate "
+                  "against the data; the grid grows only while the selected order misses it, and --select target "
+                  "ships the fewest buffers that meet it (docs/method.md, \"Accuracy target\")")
+      ->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+  sub->add_option("--target-rms", s.target.max_relative_rms,
+                  "Also require a relative RMS residual |D - G|/|D| of the passive estimate at most this (0 = off)")
+      ->check(CLI::Range(0.0, 10.0))->capture_default_str();
+  sub->add_option("--max-buffers", s.max_buffers,
+                  "Most state buffers (Q + 2S) per node an engine can afford: larger orders are neither grown nor "
+                  "selected (0 = no limit)")
+      ->check(CLI::Range(0, 3 * Order::kMaxPoles))->capture_default_str();
   sub->add_option("--runs", s.runs,
                   "Independent runs per order, sharing --live and merged; with 2 or more the error of ln Z includes "
                   "their scatter (1 = one run, whose error is sqrt(H/live) alone)")
@@ -170,7 +190,7 @@ int run_fit_command(const FitCommand& o) {
   const FitRecord record = library::write_fit_directory(o.out, data, read, settings, fit);
   created.keep();
   if (!o.quiet) {
-    print_summary(fit, data);
+    print_summary(fit, settings);
     for (const auto& w : *record.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
     if (record.notes)
       for (const auto& n : *record.notes) fmt::print(stderr, "note: {}\n", spelled(n));

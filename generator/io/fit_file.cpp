@@ -108,6 +108,24 @@ void fields(V& v, FitSettingsRecord& s) {
   v("sampler", s.sampler);
   v("passive", s.passive);
   v("grid_growth", s.grid_growth);
+  v("target", s.target);
+}
+
+template <class V>
+void fields(V& v, FitTarget& t) {
+  v("max_band_delta_alpha", t.max_band_delta_alpha);
+  v("max_relative_rms", t.max_relative_rms);
+  v("max_buffers", t.max_buffers);
+}
+
+template <class V>
+void fields(V& v, FitAccuracy& a) {
+  v("buffers", a.buffers);
+  v("relative_rms_residual", a.relative_rms_residual);
+  v("max_band_delta_alpha", a.max_band_delta_alpha);
+  v("worst_band_hz", a.worst_band_hz);
+  v("meets_target", a.meets_target);
+  v("conditioning", a.conditioning);
 }
 
 template <class V>
@@ -165,6 +183,7 @@ void fields(V& v, FitModel& m) {
   v("passive_estimate", m.passive_estimate);
   v("log_passive_prior_fraction", m.log_passive_prior_fraction);
   v("goodness_of_fit", m.goodness_of_fit);
+  v("accuracy", m.accuracy);
   v("sampler", m.sampler);
   v("sampler_note", m.sampler_note, kPlain);
   // Written by versions with the residue box's correction (docs/formats.md); read and ignored.
@@ -197,6 +216,7 @@ void fields(V& v, FitRecord& fit) {
     w("rule", fit.selected_rule);
   });
   v("parameters", fit.parameters);
+  v("log_evidence_error", fit.log_evidence_error_meaning);
   v("predictive", fit.predictive);
   v("warnings", fit.warnings, kPlain);
   v("notes", fit.notes, kPlain | kOptional);

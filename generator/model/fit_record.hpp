@@ -51,6 +51,13 @@ struct FitSamplerSettings {
   std::optional<std::string> residues;              ///< absent in older fits
 };
 
+/// The accuracy target of a fit (selection/accuracy_target.hpp); absent in older fits.
+struct FitTarget {
+  double max_band_delta_alpha = 0.0;
+  std::optional<double> max_relative_rms;  ///< absent when not part of the target
+  std::optional<std::int64_t> max_buffers;  ///< absent when unlimited
+};
+
 struct FitSettingsRecord {
   std::int64_t live = 0;
   std::uint64_t seed = 0;
@@ -64,6 +71,7 @@ struct FitSettingsRecord {
   FitSamplerSettings sampler;
   std::optional<std::string> passive;  ///< present when the prior was truncated to passive models
   std::optional<std::int64_t> grid_growth;  ///< absent in older fits (their grids never grew)
+  std::optional<FitTarget> target;          ///< absent in older fits
 };
 
 /// The grid finally fitted, when it grew beyond settings.qmax × settings.smax or the selected order lies on its
@@ -101,6 +109,15 @@ struct FitPassiveEstimate {
   std::optional<std::string> conditioning_tradeoff;
 };
 
+/// What an order costs and how close its passive estimate comes (selection/accuracy_target.hpp); absent in older
+/// fits.
+struct FitAccuracy {
+  std::int64_t buffers = 0;  ///< Q + 2S state buffers per node
+  double relative_rms_residual = 0.0, max_band_delta_alpha = 0.0, worst_band_hz = 0.0;
+  bool meets_target = false;
+  double conditioning = 1.0;  ///< of the passive estimate (passive_estimate.conditioning, docs/passivity.md)
+};
+
 struct FitGoodness {
   std::string estimate;
   double relative_rms_residual = 0.0, max_abs_delta_alpha = 0.0;
@@ -119,6 +136,7 @@ struct FitModel {
   std::optional<FitPassiveEstimate> passive_estimate;  ///< absent in older fits
   std::optional<double> log_passive_prior_fraction;    ///< with --passive
   std::optional<FitGoodness> goodness_of_fit;          ///< absent in older fits
+  std::optional<FitAccuracy> accuracy;                 ///< of the passive estimate; absent in older fits
   std::optional<std::string> sampler;                  ///< absent in older fits
   std::optional<std::string> sampler_note;  ///< may name settings (core/errors.hpp, setting())
 };
@@ -142,6 +160,8 @@ struct FitRecord {
   std::vector<std::pair<std::string, double>> bayes_factors_deciban, bayes_factor_errors_deciban;  ///< by order
   std::string selected_order, selected_rule;
   std::vector<FitParameter> parameters;        ///< the selected order's
+  /// What each model's log_evidence_error is (e.g. a lower bound of the seed scatter); absent in older fits.
+  std::optional<std::string> log_evidence_error_meaning;
   std::optional<FitPredictive> predictive;     ///< absent in older fits
   /// Absent in older fits. Texts may name settings (core/errors.hpp, setting()): writers of files and
   /// reports give them plain_settings(), the command line spells each as its flag.

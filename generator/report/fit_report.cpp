@@ -84,6 +84,42 @@ plot::Figure evidence_figure(const FitRecord& fit) {
   return fig;
 }
 
+/// Accuracy against cost (selection/accuracy_target.hpp): each order's passive estimate, max |Δα| per one-third-
+/// octave band against its buffers (Q + 2S), the target as a dashed line and the selected order marked. Empty
+/// (no series) for fits written before accuracy was recorded.
+plot::Figure accuracy_figure(const FitRecord& fit) {
+  plot::Figure fig("fig-accuracy", "Largest |Δα| per band of each order's passive estimate against its buffers", 720.0,
+                   300.0);
+  fig.x.label = "buffers per node (Q + 2S)";
+  fig.y.label = "max |Δα| in a band";
+  fig.y.kind = plot::ScaleKind::log;
+  std::vector<double> x, y, sx, sy;
+  double most = 0.0;
+  for (const auto& m : fit.models) {
+    if (!m.accuracy) continue;
+    const bool chosen = m.order == fit.selected_order;
+    // A floor keeps an exact fit (|Δα| = 0) on the logarithmic axis.
+    (chosen ? sy : y).push_back(std::max(m.accuracy->max_band_delta_alpha, 1e-6));
+    (chosen ? sx : x).push_back(static_cast<double>(m.accuracy->buffers));
+    most = std::max(most, static_cast<double>(m.accuracy->buffers));
+  }
+  if (x.empty() && sx.empty()) return fig;
+  fig.add(plot::markers("orders", "fitted orders", "c1", x, y));
+  fig.add(plot::markers("selected", fmt::format("selected ({})", fit.selected_order), "c2", sx, sy));
+  if (fit.settings.target) {
+    const double t = fit.settings.target->max_band_delta_alpha;
+    plot::Series target = plot::line("target", fmt::format("target |Δα| ≤ {}", number(t, 3)), "c3", {0.0, most}, {t, t});
+    target.dashed = true;
+    fig.add(std::move(target));
+  }
+  return fig;
+}
+
+/// The accuracy of a model entry's passive estimate, one figure ("—" in fits written before it was recorded).
+std::string accuracy(const FitModel& model, double FitAccuracy::*key, int digits) {
+  return model.accuracy ? number((*model.accuracy).*key, digits) : "—";
+}
+
 /// One goodness-of-fit figure of a model entry ("—" in fits written before it was recorded).
 std::string goodness(const FitModel& model, double FitGoodness::*key) {
   return model.goodness_of_fit ? number((*model.goodness_of_fit).*key, 3) : "—";
@@ -97,22 +133,33 @@ std::string by_order(const std::vector<std::pair<std::string, double>>& table, c
 }
 
 std::string evidence_table(const FitRecord& fit) {
-  Table t{{"order", "buffers", "ln Z", "± σ", "Bayes factor [dB]", "± σ [dB]", "max ln L", "rel. RMS residual", "max |Δα|"},
-          {}, {1, 2, 3, 4, 5, 6, 7, 8}, {}, {}};
+  const bool lower_bound = fit.log_evidence_error_meaning && fit.log_evidence_error_meaning->find("lower bound") != std::string::npos;
+  Table t{{"order", "buffers", "ln Z", lower_bound ? "± σ (lower bound)" : "± σ", "Bayes factor [dB]", "± σ [dB]",
+           "max ln L", "rel. RMS residual", "max |Δα|", "passive: rel. RMS", "passive: max |Δα| per band",
+           "meets target", "conditioning"},
+          {}, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12}, {}, {}};
   const std::string& selected = fit.selected_order;
   for (const auto& m : fit.models) {
     const std::string& order = m.order;
     t.rows.push_back({escape_xml(order), std::to_string(m.q + 2 * m.s), fmt::format("{:.2f}", m.log_evidence),
                       fmt::format("{:.2f}", m.log_evidence_error), by_order(fit.bayes_factors_deciban, order),
                       by_order(fit.bayes_factor_errors_deciban, order), fmt::format("{:.2f}", m.max_log_likelihood),
-                      goodness(m, &FitGoodness::relative_rms_residual), goodness(m, &FitGoodness::max_abs_delta_alpha)});
+                      goodness(m, &FitGoodness::relative_rms_residual), goodness(m, &FitGoodness::max_abs_delta_alpha),
+                      accuracy(m, &FitAccuracy::relative_rms_residual, 3),
+                      accuracy(m, &FitAccuracy::max_band_delta_alpha, 3),
+                      m.accuracy ? (m.accuracy->meets_target ? "yes" : "no") : "—",
+                      accuracy(m, &FitAccuracy::conditioning, 3)});
     t.row_classes.push_back(order == selected ? "selected" : "");
   }
   t.caption = fmt::format(
       "Bayes factor of each order against the selected one, 10·log₁₀(Z/Z<sub>sel</sub>) in deciban: −10 dB is odds "
       "10:1 against, −20 dB 100:1 (decisive). Buffers: state variables of the filter (Q + 2S). Goodness of fit at "
       "each order's maximum-likelihood parameters: relative RMS residual ‖D − G‖/‖D‖ of the complex admittance and "
-      "the largest absorption error max |Δα| over the data frequencies. Selection rule: {}.",
+      "the largest absorption error max |Δα| over the data frequencies. Passive: the same of each order's passive "
+      "estimate (what emit ships), |Δα| as its largest in any one-third-octave band; it meets the target {}; conditioning: Σ over terms of max |term| / max |G| over the data band (docs/passivity.md). {}"
+      "Selection rule: {}.",
+      fit.settings.target ? "|Δα| ≤ " + number(fit.settings.target->max_band_delta_alpha, 3) : std::string("—"),
+      fit.log_evidence_error_meaning ? "Error of ln Z: " + escape_xml(*fit.log_evidence_error_meaning) + ". " : std::string(),
       escape_xml(fit.selected_rule));
   return html(t);
 }
@@ -225,6 +272,7 @@ std::vector<plot::Figure> fit_figures(const FitRecord& fit, const Measurement& d
   out.push_back(quantity_figure("fig-im-g", "Imaginary part of the admittance against frequency", "Im G (normalised)", f,
                                 to_vector(data.y.imag()), fit, &FitPredictive::im_G));
   out.push_back(evidence_figure(fit));
+  out.push_back(accuracy_figure(fit));
   return out;
 }
 
@@ -257,6 +305,12 @@ std::string fit_report_html(const FitRecord& fit, const Measurement& data) {
           figure(figures[3].svg(),
                  "(c) Natural-log evidence ln Z of every order; error bars ±1σ (often smaller than the marker).") +
           evidence_table(fit);
+  if (!figures[4].series().empty())
+    body += "<h2>Accuracy against cost</h2>\n" +
+            figure(figures[4].svg(),
+                   "(d) What each order's passive estimate (what emit ships) buys: the largest |Δα| in any "
+                   "one-third-octave band against the buffers per node it costs; the dashed line is the accuracy "
+                   "target, the selected order is marked.");
   body += "<h2>Parameters</h2>\n" + parameter_table(fit);
   body += "<h2>Sampler diagnostics</h2>\n" + sampler_table(fit);
   body += "<h2>Input and settings</h2>\n" + provenance(fit);

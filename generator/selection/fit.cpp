@@ -9,9 +9,10 @@
 #include "inference/run_merge.hpp"
 #include "model/multipole.hpp"
 #include "model/passivity.hpp"
+#include "selection/accuracy_stop.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/grid_growth.hpp"
-#include "selection/reduced_model.hpp"
+#include "selection/missed_modes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -236,161 +237,6 @@ void check_constrainable(const Measurement& data, const FitSettings& settings) {
 
 }  // namespace
 
-std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, double tolerance) {
-  std::vector<MissedMode> missed;
-  for (std::size_t big = 0; big < models.size(); ++big) {
-    const ModelResult& b = models[big];
-    std::size_t worst = models.size();
-    for (std::size_t small = 0; small < models.size(); ++small) {
-      const ModelResult& m = models[small];
-      const bool contained = m.order != b.order && m.order.q() <= b.order.q() && m.order.s() <= b.order.s();
-      if (contained && m.run.max_log_likelihood > b.run.max_log_likelihood + tolerance &&
-          (worst == models.size() || m.run.max_log_likelihood > models[worst].run.max_log_likelihood))
-        worst = small;
-    }
-    if (worst != models.size())
-      missed.push_back({big, worst, models[worst].run.max_log_likelihood, false, b.run.max_log_likelihood, false});
-  }
-  return missed;
-}
-
-namespace {
-
-bool pole_sampled(const ModelResult& m) { return m.sampler == kPoleSamplerName; }
-
-/// Both checks on the pole sampler's marginal (selection/reduced_model.hpp; docs/method.md, "Model
-/// selection"), between every pair of orders one of which contains the other: the larger order's peak with
-/// its surplus poles dropped against the smaller's, and the smaller's peak completed by the larger's surplus
-/// poles against the larger's.
-std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const FitSettings& settings,
-                                              const std::vector<ModelResult>& models, double tolerance) {
-  std::vector<MarginalPeak> peak;
-  for (const ModelResult& m : models)
-    peak.push_back(marginal_peak(data, m.order, m.run, m.live, settings.priors, settings.data_count));
-  std::vector<std::optional<MissedMode>> worst(models.size());
-  const auto flag = [&](std::size_t order, std::size_t shown, double log_l, bool larger) {
-    if (log_l > peak[order].log_l + tolerance && (!worst[order] || log_l > worst[order]->reference_log_l))
-      worst[order] = MissedMode{order, shown, log_l, larger, peak[order].log_l, true};
-  };
-  for (std::size_t small = 0; small < models.size(); ++small)
-    for (std::size_t big = 0; big < models.size(); ++big) {
-      const Order &s = models[small].order, &b = models[big].order;
-      if (s == b || s.q() > b.q() || s.s() > b.s() || !std::isfinite(peak[small].log_l) ||
-          !std::isfinite(peak[big].log_l))
-        continue;
-      const double* theta_small = models[small].run.point(peak[small].row);
-      const double* theta_big = models[big].run.point(peak[big].row);
-      flag(small, big, reduced_log_marginal(data, s, b, theta_big, settings.priors, settings.data_count), true);
-      flag(big, small,
-           completed_log_marginal(data, s, theta_small, b, theta_big, settings.priors, settings.data_count), false);
-    }
-  std::vector<MissedMode> missed;
-  for (const auto& m : worst)
-    if (m) missed.push_back(*m);
-  return missed;
-}
-
-}  // namespace
-
-std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
-                                     const std::vector<ModelResult>& models, double tolerance) {
-  if (!models.empty() && std::all_of(models.begin(), models.end(), pole_sampled))
-    return marginal_missed_modes(data, settings, models, tolerance);
-  std::vector<MissedMode> missed = missed_modes(models, tolerance);
-  if (settings.passive) return missed;
-  for (std::size_t small = 0; small < models.size(); ++small) {
-    const ModelResult& m = models[small];
-    if (std::any_of(missed.begin(), missed.end(), [&](const MissedMode& x) { return x.order == small; })) continue;
-    if (m.run.size() == 0) continue;
-    // The run's own best with its residues refitted the same way, so that only better poles count.
-    const double own = std::max(m.run.max_log_likelihood,
-                                reduced_log_likelihood(data, m.order, m.order, m.run.point(max_likelihood_index(m.run)),
-                                                       settings.priors, settings.data_count));
-    std::optional<MissedMode> worst;
-    for (std::size_t big = 0; big < models.size(); ++big) {
-      const ModelResult& b = models[big];
-      if (b.order == m.order || b.order.q() < m.order.q() || b.order.s() < m.order.s() || b.run.size() == 0) continue;
-      const double log_l = reduced_log_likelihood(data, m.order, b.order, b.run.point(max_likelihood_index(b.run)),
-                                                  settings.priors, settings.data_count);
-      if (log_l > own + tolerance && (!worst || log_l > worst->reference_log_l))
-        worst = MissedMode{small, big, log_l, true, m.run.max_log_likelihood, false};
-    }
-    if (worst) missed.push_back(*worst);
-  }
-  std::sort(missed.begin(), missed.end(), [](const MissedMode& x, const MissedMode& y) { return x.order < y.order; });
-  return missed;
-}
-
-namespace {
-
-/// "Q1S3: the peak of ln L(poles) … 1281.9 is below 1284.3 reached by …": what a missed mode shows.
-std::string missed_mode_finding(const std::vector<ModelResult>& models, const MissedMode& m) {
-  const ModelResult &run = models[m.order], &shown = models[m.contained];
-  const std::string reached =
-      m.marginal ? (m.larger ? "reached by the peak of the larger order" : "reached by the peak of the nested order")
-                 : (m.larger ? "reached by the best model of the larger order" : "of the nested order");
-  const std::string how =
-      m.marginal ? (m.larger ? " with its surplus poles dropped" : " completed by the larger order's surplus poles")
-                 : (m.larger ? " with its surplus terms dropped" : "");
-  return fmt::format("{}: {} {:.1f} is below {:.1f} {} {}{}", run.order.name(),
-                     m.marginal ? "the peak of ln L(poles) (residues and noise integrated out)" : "best ln L",
-                     m.own_log_l, m.reference_log_l, reached, shown.order.name(), how);
-}
-
-/// Whether an order's independent runs disagree by more than the largest gap a note explains (its error, from
-/// their scatter, above RerunCheck::kMaxGapNats): one found evidence another missed. Where the fit asked for
-/// independent runs (FitSettings::runs ≥ 2), re-run rounds treat it as a missed mode and the fit warns if it
-/// stays (runs_disagree_warnings).
-bool runs_disagree(const ModelResult& m) { return m.run.log_z_error > RerunCheck::kMaxGapNats; }
-
-/// Whether `m` is explained by the order's last re-run round (RerunCheck): ln Z agreed and the gap is small.
-bool settled(const ModelResult& run, const MissedMode& m) {
-  return run.rerun && run.rerun->agrees() && m.reference_log_l - m.own_log_l <= RerunCheck::kMaxGapNats;
-}
-
-}  // namespace
-
-std::vector<std::string> missed_mode_notes(const std::vector<ModelResult>& models, const std::vector<MissedMode>& missed) {
-  std::vector<std::string> notes;
-  for (const MissedMode& m : missed) {
-    const ModelResult& run = models[m.order];
-    if (!settled(run, m)) continue;
-    notes.push_back(fmt::format(
-        "{}; runs adding {} live points did not reach it either and left ln Z where it was ({:+.2f} ± {:.2f} "
-        "nats): that point lies in a region holding no evidence that more live points find, and ln Z of {} stands",
-        missed_mode_finding(models, m), run.rerun->live, run.rerun->log_z_shift, run.rerun->error, run.order.name()));
-  }
-  return notes;
-}
-
-std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models,
-                                              const std::vector<MissedMode>& missed) {
-  std::vector<std::string> warnings;
-  for (const MissedMode& m : missed) {
-    const ModelResult& run = models[m.order];
-    if (settled(run, m)) continue;
-    warnings.push_back(fmt::format("{}; the sampler missed a mode of {}, whose ln Z is underestimated (rerun with "
-                                   "more live points, {})",
-                                   missed_mode_finding(models, m), run.order.name(), setting("sampler.live")));
-  }
-  return warnings;
-}
-
-std::vector<std::string> runs_disagree_warnings(const std::vector<ModelResult>& models) {
-  std::vector<std::string> warnings;
-  for (const ModelResult& m : models)
-    if (runs_disagree(m))
-      warnings.push_back(fmt::format("{}: its independent runs ({} live points in all) disagree, ln Z {:.1f} ± {:.1f}: "
-                                     "some found a mode others missed, and ln Z of {} is that uncertain (rerun with "
-                                     "more live points, {})",
-                                     m.order.name(), m.live, m.run.log_z, m.run.log_z_error, m.order.name(),
-                                     setting("sampler.live")));
-  return warnings;
-}
-
-std::vector<std::string> missed_mode_warnings(const std::vector<ModelResult>& models, double tolerance) {
-  return missed_mode_warnings(models, missed_modes(models, tolerance));
-}
 
 std::vector<Eigen::VectorXd> best_samples(const ModelResult& model, int n) {
   const NestedRun& run = model.run;
@@ -517,34 +363,44 @@ void rerun_missed_modes(const Measurement& data, const FitSettings& settings, co
       for (std::size_t k = 0; k < tasks.size(); ++k)
         if (tasks[k].order == i) mine.push_back(&done[k]);
       results[i] = merged_with(results[i], mine, settings.runs > 1);
+      results[i].accuracy.reset();  // a new run: its passive estimate is made again (accuracy_stop.hpp)
       rounds[i] = round;
     }
   }
 }
 
-std::size_t select_order(const FitSettings& settings, const std::vector<ModelResult>& results) {
-  std::vector<double> log_z, error;
-  std::vector<int> buffers;
-  for (const auto& m : results) {
-    log_z.push_back(m.run.log_z);
-    error.push_back(m.run.log_z_error);
-    buffers.push_back(m.order.buffers());
-  }
-  return settings.rule.select(log_z, error, buffers);
-}
-
-/// Grows the fitted orders while the selected one lies on their edge (selection/grid_growth.hpp): runs the added
-/// orders (and the re-runs they call for) and keeps `grid`, `results` and `rounds` in Q-major order.
+/// Grows the fitted orders while the selected one lies on their edge and its passive estimate misses the accuracy
+/// target (selection/grid_growth.hpp, selection/accuracy_stop.hpp): runs the added orders (and the re-runs they
+/// call for), estimates their passive models, and keeps `grid`, `results` and `rounds` in Q-major order.
+/// `would_grow` is set when the target stopped a growth the evidence asked for.
 GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, std::vector<Order>& grid,
                      std::vector<ModelResult>& results, std::vector<int>& rounds, double first_round_passes,
-                     Progress& progress) {
+                     const passivity::LazyPassiveBound& bound, bool& would_grow, Progress& progress) {
   GridGrowth growth{settings.qmax, settings.smax, {}, {}};
   const int k = real_data_count(settings.data_count, data.size());
   const double budget = std::max(first_round_passes, kMinGrowthBudgetPasses);
   double spent = 0.0;
   for (;;) {
-    const auto step = next_grid_step(results, select_order(settings, results), settings, k,
-                                     static_cast<long>(data.size()), spent, budget, growth.edge);
+    estimate_passive(data, settings, results, bound);
+    const std::size_t selected = select_usable(settings, results);
+    auto step = next_grid_step(results, selected, settings, k, static_cast<long>(data.size()), spent, budget,
+                               growth.edge);
+    if (step && settings.max_buffers > 0) {
+      const auto over = [&](const Order& o) { return o.buffers() > settings.max_buffers; };
+      step->add.erase(std::remove_if(step->add.begin(), step->add.end(), over), step->add.end());
+      if (step->add.empty()) {
+        growth.edge = fmt::format("{} lies on the edge of the fitted orders and the evidence still rises, but the "
+                                  "next orders exceed the budget of {} buffers per node ({})",
+                                  results[selected].order.name(), settings.max_buffers, setting("max_buffers"));
+        step.reset();
+      }
+    }
+    const auto& accuracy = results[selected].accuracy;
+    if (accuracy && accuracy->meets) {
+      would_grow = step.has_value() || !growth.edge.empty();
+      growth.edge.clear();  // the target is met: larger orders are a note, not a warning
+      return growth;
+    }
     if (!step) return growth;
     progress.message(step->reason);
     growth.steps.push_back(step->reason);
@@ -612,8 +468,11 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   rerun_missed_modes(data, settings, grid, results, rounds, progress);
 
   FitResult fit;
-  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_passes, progress);
-  fit.selected = select_order(settings, results);
+  const passivity::LazyPassiveBound bound(data);
+  bool would_grow = false;
+  fit.grid = grow_grid(data, settings, grid, results, rounds, first_round_passes, bound, would_grow, progress);
+  estimate_passive(data, settings, results, bound);
+  fit.selected = select_usable(settings, results);
   fit.models = std::move(results);
   const std::vector<MissedMode> missed = missed_modes(data, settings, fit.models);
   fit.warnings = missed_mode_warnings(fit.models, missed);
@@ -621,18 +480,9 @@ FitResult complete_fit(const Measurement& data, const FitSettings& given, std::v
   if (settings.runs > 1)
     for (std::string& w : runs_disagree_warnings(fit.models)) fit.warnings.push_back(std::move(w));
   if (!fit.grid.edge.empty()) fit.warnings.push_back(fit.grid.edge);
-  // One task per order, each writing its own slot: the same bits at any thread count (docs/method.md, "Determinism").
-  std::vector<std::size_t> orders(fit.models.size());
-  std::iota(orders.begin(), orders.end(), std::size_t{0});
-  std::stable_sort(orders.begin(), orders.end(),
-                   [&](auto a, auto b) { return fit.models[a].order.dim() > fit.models[b].order.dim(); });
-  const passivity::LazyPassiveBound bound(data);
-  run_in_parallel(orders, settings.threads, [&](std::size_t i) {
-    auto& m = fit.models[i];
-    m.passive = passivity::passive_estimate(data, m.order, best_samples(m, passivity::PassiveEstimate::kCandidates),
-                                            settings.data_count, passivity::PassiveEstimate::kStarts, &bound,
-                                            settings.priors.admittance_scale);
-  });
+  if (auto note = target_met_note(data, settings, fit.models, fit.selected, would_grow); !note.empty())
+    fit.notes.push_back(std::move(note));
+  if (auto w = target_missed_warning(settings, fit.models, fit.selected); !w.empty()) fit.warnings.push_back(std::move(w));
   if (const auto w = passivity::passivity_cost_warning(fit.models[fit.selected].order, fit.models[fit.selected].passive);
       !w.empty())
     fit.warnings.push_back(w);

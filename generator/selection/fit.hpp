@@ -14,6 +14,7 @@
 #include "inference/priors.hpp"
 #include "model/order.hpp"
 #include "passivity/passive_estimate.hpp"
+#include "selection/accuracy_target.hpp"
 #include "selection/selection_rule.hpp"
 
 #include <Eigen/Core>
@@ -52,7 +53,14 @@ struct FitSettings {
   std::string priors_origin = "band";  ///< "band", "table1" or the prior file's path (a label for fit.json)
   bool reduce_symmetry = true;
   DataCount data_count = DataCount::two_per_point;
-  SelectionRule rule = SelectionRule::simplest(10.0);  ///< Occam among the orders the evidence cannot tell apart (selection_rule.hpp)
+  /// The cheapest order whose passive estimate meets `target` (selection_rule.hpp; docs/method.md, "Accuracy
+  /// target", has why this and not the evidence rule is the default).
+  SelectionRule rule = SelectionRule::target();
+  /// The accuracy the user needs (selection/accuracy_target.hpp): the grid grows only while the selected order's
+  /// passive estimate misses it, and the rule `target` ships the cheapest order that meets it.
+  AccuracyTarget target{};
+  /// The most buffers (Q + 2S) a node may spend (0: no limit): larger orders are neither grown nor selected.
+  int max_buffers = 0;
   int threads = 0;  ///< 0 = hardware concurrency
   /// Rounds of re-running orders flagged by missed_mode_warnings, each doubling the order's live points by
   /// runs added and merged with its run (rerun_missed_modes in fit.cpp; a narrow mode with prior-volume
@@ -114,6 +122,8 @@ struct ModelResult {
   std::string sampler_note{};
   double cpu_seconds = 0.0;  ///< CPU time of the thread that ran it (for benchmarks on a loaded machine; not stored)
   std::optional<RerunCheck> rerun{};  ///< the last round of re-runs for a missed mode, if any
+  /// The passive estimate's accuracy against the data and the fit's target (set with `passive`).
+  std::optional<OrderAccuracy> accuracy{};
 };
 
 /// Posterior predictive band at the data frequencies: 2.5 %, 50 %, 97.5 % quantiles.

@@ -67,6 +67,9 @@ FitSettingsRecord settings_record(const FitSettings& s, Eigen::Index n_points) {
                              "conditional)"
                            : "sampled";
   r.grid_growth = s.grid_growth;
+  r.target = FitTarget{s.target.max_band_delta_alpha, std::nullopt, std::nullopt};
+  if (s.target.max_relative_rms > 0.0) r.target->max_relative_rms = s.target.max_relative_rms;
+  if (s.max_buffers > 0) r.target->max_buffers = s.max_buffers;
   if (s.passive) r.passive = "prior truncated to passive models (Hamiltonian test); evidence under the renormalised prior";
   return r;
 }
@@ -119,6 +122,9 @@ FitModel model_record(const ModelResult& m, const Measurement& data) {
   if (m.run.log_support_fraction != 0.0) r.log_passive_prior_fraction = m.run.log_support_fraction;
   const GoodnessOfFit g = goodness_of_fit(data, m);
   r.goodness_of_fit = FitGoodness{"max_likelihood", g.relative_rms, g.max_abs_delta_alpha};
+  if (m.accuracy)
+    r.accuracy = FitAccuracy{m.order.buffers(), m.accuracy->relative_rms, m.accuracy->max_band_delta_alpha,
+                             m.accuracy->worst_band_hz, m.accuracy->meets, m.passive.conditioning};
   r.sampler = m.sampler;  // "poles_analytic_residues" | "full" (selection/fit.hpp)
   if (!m.sampler_note.empty()) r.sampler_note = m.sampler_note;
   return r;
@@ -137,6 +143,14 @@ FitPredictive predictive_record(const PredictiveBand& b) {
 
 }  // namespace
 
+/// fit.json's "log_evidence_error": what each model's error of ln Z is (docs/method.md, "Model selection").
+std::string log_evidence_error_meaning(int runs) {
+  if (runs > 1)
+    return fmt::format("from the scatter of {} independent runs per order where it exceeds sqrt(H/n)", runs);
+  return "sqrt(H/n) of one run, a lower bound: on real data the seed scatter of ln Z is 2-15 times larger; "
+         "two independent runs per order (runs = 2) measure it";
+}
+
 FitRecord fit_record(const Measurement& data, const ReadOptions& read, const FitSettings& given, const FitResult& fit) {
   const FitSettings settings = with_band_priors(given, data);
   const ModelResult& chosen = fit.models[fit.selected];
@@ -154,6 +168,7 @@ FitRecord fit_record(const Measurement& data, const ReadOptions& read, const Fit
   r.selected_order = chosen.order.name();
   r.selected_rule = settings.rule.describe();
   r.parameters = parameters(chosen.parameters);
+  r.log_evidence_error_meaning = log_evidence_error_meaning(settings.runs);
   r.predictive = predictive_record(fit.predictive);
   std::vector<std::string> warnings = data.warnings;  // the reader's (e.g. plausibility demoted to warnings)
   warnings.insert(warnings.end(), fit.warnings.begin(), fit.warnings.end());

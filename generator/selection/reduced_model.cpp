@@ -86,8 +86,7 @@ double reduced_log_likelihood(const Measurement& data, const Order& small, const
   return best;
 }
 
-MarginalPeak marginal_peak(const Measurement& data, const Order& order, const NestedRun& run, int live,
-                           const PriorRanges& priors, DataCount count) {
+MarginalPeak marginal_peak(const ResidueEvidence& evidence, const Order& order, const NestedRun& run, int live) {
   MarginalPeak peak;
   if (run.size() == 0) return peak;
   if (!run.sampled_log_likelihood.empty()) {  // the pole sampler's own values: no evaluation needed
@@ -95,7 +94,6 @@ MarginalPeak marginal_peak(const Measurement& data, const Order& order, const Ne
       if (run.sampled_log_likelihood[i] > peak.log_l) peak = {i, run.sampled_log_likelihood[i]};
     return peak;
   }
-  const ResidueEvidence evidence(data, order, count, priors.admittance_scale);
   const std::size_t first = run.size() > static_cast<std::size_t>(live) + 1 ? run.size() - static_cast<std::size_t>(live) - 1 : 0;
   std::vector<double> psi;
   for (std::size_t i = first; i < run.size(); ++i) {
@@ -107,10 +105,9 @@ MarginalPeak marginal_peak(const Measurement& data, const Order& order, const Ne
   return peak;
 }
 
-double reduced_log_marginal(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
-                            const PriorRanges& priors, DataCount count) {
+double reduced_log_marginal(const ResidueEvidence& evidence, const Order& small, const Order& big,
+                            const double* theta_big) {
   ADMITGEN_ENSURE(small.q() <= big.q() && small.s() <= big.s(), "{} is not contained in {}", small.name(), big.name());
-  const ResidueEvidence evidence(data, small, count, priors.admittance_scale);
   double best = -std::numeric_limits<double>::infinity();
   std::vector<double> psi;
   for (unsigned real : subsets(big.q(), small.q()))
@@ -122,10 +119,9 @@ double reduced_log_marginal(const Measurement& data, const Order& small, const O
   return best;
 }
 
-double completed_log_marginal(const Measurement& data, const Order& small, const double* theta_small, const Order& big,
-                              const double* theta_big, const PriorRanges& priors, DataCount count) {
+double completed_log_marginal(const ResidueEvidence& evidence, const Order& small, const double* theta_small,
+                              const Order& big, const double* theta_big) {
   ADMITGEN_ENSURE(small.q() <= big.q() && small.s() <= big.s(), "{} is not contained in {}", small.name(), big.name());
-  const ResidueEvidence evidence(data, big, count, priors.admittance_scale);
   std::vector<double> kept;
   gather_poles(small, theta_small, all_of(small.q()), all_of(small.s()), kept);
   double best = -std::numeric_limits<double>::infinity();

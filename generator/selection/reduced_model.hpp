@@ -17,6 +17,7 @@
 #include "inference/likelihood.hpp"
 #include "inference/nested_sampler.hpp"
 #include "inference/priors.hpp"
+#include "inference/residue_evidence.hpp"
 #include "model/order.hpp"
 
 namespace admitgen {
@@ -44,15 +45,17 @@ struct MarginalPeak {
 /// The highest marginal over a run's final `live` points and anything after them (where nested sampling
 /// ends), read from NestedRun::sampled_log_likelihood where the run holds it (then over all its points);
 /// log_l = −∞ for an empty run.
-MarginalPeak marginal_peak(const Measurement& data, const Order& order, const NestedRun& run, int live,
-                           const PriorRanges& priors, DataCount count);
-/// The highest marginal of `small` over every way of dropping surplus poles of θ' (order `big`).
-double reduced_log_marginal(const Measurement& data, const Order& small, const Order& big, const double* theta_big,
-                            const PriorRanges& priors, DataCount count);
+/// `evidence` is the marginal of `order` on the data (built once per order by the caller and passed to all
+/// three functions: its construction is most of the cost of a check).
+MarginalPeak marginal_peak(const ResidueEvidence& evidence, const Order& order, const NestedRun& run, int live);
+/// The highest marginal of `small` (its marginal `small_evidence`) over every way of dropping surplus poles of θ'
+/// (order `big`).
+double reduced_log_marginal(const ResidueEvidence& small_evidence, const Order& small, const Order& big,
+                            const double* theta_big);
 /// The highest marginal of `big` over every way of completing the poles of θ (order `small`) with surplus
 /// poles of θ' (order `big`): where the larger run's own peak is below it, the larger run missed the mode
-/// that the smaller one found.
-double completed_log_marginal(const Measurement& data, const Order& small, const double* theta_small, const Order& big,
-                              const double* theta_big, const PriorRanges& priors, DataCount count);
+/// that the smaller one found. `big_evidence`: the marginal of `big`.
+double completed_log_marginal(const ResidueEvidence& big_evidence, const Order& small, const double* theta_small,
+                              const Order& big, const double* theta_big);
 
 }  // namespace admitgen

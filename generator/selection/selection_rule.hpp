@@ -10,6 +10,10 @@
 ///                by parameter count too (1 + 2Q + 4S = 1 + 2·buffers), so this is Occam's choice among the
 ///                orders the evidence cannot tell apart. The default is simplest:10 (a factor 10, Jeffreys'
 ///                "strong").
+///   target       the fewest buffers whose passive estimate meets the accuracy target (selection/accuracy_target.hpp),
+///                ties broken by higher evidence; when no fitted order meets it, simplest:10 decides.
+/// Every rule chooses among the usable orders only: within the per-node budget of buffers, and with evidence that
+/// is determined (its independent runs agree: an order whose runs disagree has an ln Z no rule can rank).
 #pragma once
 
 #include "inference/evidence.hpp"  // deciban: the unit of the margins
@@ -21,20 +25,27 @@ namespace admitgen {
 
 class SelectionRule {
  public:
-  /// Parses "best", "cheapest:DB" or "simplest:DB" with DB ≥ 0; throws InputError otherwise.
+  /// Parses "best", "target", "cheapest:DB" or "simplest:DB" with DB ≥ 0; throws InputError otherwise.
   static SelectionRule parse(const std::string& text);
   static SelectionRule best() { return SelectionRule(Kind::best, 0.0); }
   static SelectionRule simplest(double margin_db) { return SelectionRule(Kind::simplest, margin_db); }
+  static SelectionRule target() { return SelectionRule(Kind::target, 0.0); }
 
   /// Index of the chosen order. log_z[i] and log_z_error[i] in nats; buffers[i] = Q + 2S.
   std::size_t select(const std::vector<double>& log_z, const std::vector<double>& log_z_error,
                      const std::vector<int>& buffers) const;
+  /// The same among the orders with usable[i] (at least one); meets[i]: order i's passive estimate meets the
+  /// accuracy target (read by `target` only).
+  std::size_t select(const std::vector<double>& log_z, const std::vector<double>& log_z_error,
+                     const std::vector<int>& buffers, const std::vector<bool>& meets,
+                     const std::vector<bool>& usable) const;
+  bool uses_target() const { return kind_ == Kind::target; }
   /// e.g. "best evidence" or "cheapest within 10 dB of the best evidence".
   std::string describe() const;
   std::string spelling() const;  ///< as given on the command line
 
  private:
-  enum class Kind { best, cheapest, simplest };
+  enum class Kind { best, cheapest, simplest, target };
   SelectionRule(Kind kind, double margin_db) : kind_(kind), margin_db_(margin_db) {}
   Kind kind_;
   double margin_db_;
@@ -42,5 +53,7 @@ class SelectionRule {
 
 /// Standard errors of a difference of ln Z allowed by simplest:DB.
 inline constexpr double kSimplestErrors = 2.0;
+/// The margin (deciban) of the evidence rule `target` falls back on when no order meets the target.
+inline constexpr double kTargetFallbackMarginDb = 10.0;
 
 }  // namespace admitgen

@@ -47,6 +47,28 @@ TEST_CASE("selection: simplest within a margin plus two errors of the difference
   CHECK(SelectionRule::parse("simplest:10").spelling() == "simplest:10");
 }
 
+TEST_CASE("selection: target ships the fewest buffers that meet it, undetermined or over-budget orders are never chosen") {
+  // Indices: 0 = 4 buffers meets, 1 = 3 buffers misses, 2 = 9 buffers meets (best evidence), 3 = 2 buffers meets
+  // but its runs disagree (unusable). Evidence as in the previous case.
+  const std::vector<double> log_z{-2.5, -3.9, 0.0, -30.0};
+  const std::vector<double> errors(4, 0.1);
+  const std::vector<int> buffers{4, 3, 9, 2};
+  const std::vector<bool> all(4, true);
+  const SelectionRule target = SelectionRule::parse("target");
+  CHECK(target.spelling() == "target");
+  // Every order usable: index 3 (2 buffers) meets and is cheapest, whatever its evidence.
+  CHECK(target.select(log_z, errors, buffers, {true, false, true, true}, all) == 3);
+  // Index 3 unusable: index 0 (4 buffers) is the cheapest that meets; 1 is cheaper but misses.
+  CHECK(target.select(log_z, errors, buffers, {true, false, true, true}, {true, true, true, false}) == 0);
+  // Equal buffers: the higher evidence.
+  CHECK(target.select({-1.0, 0.0}, {0.0, 0.0}, {4, 4}, {true, true}, {true, true}) == 1);
+  // None meets: simplest:10 decides (with errors 0.1 index 0 qualifies, as in the previous case).
+  CHECK(target.select(log_z, errors, buffers, {false, false, false, false}, all) == 0);
+  // The evidence rules skip unusable orders too: best without index 2 is index 0.
+  CHECK(SelectionRule::parse("best").select(log_z, errors, buffers, {false, false, false, false},
+                                           {true, true, false, true}) == 0);
+}
+
 TEST_CASE("missed-mode check: a containing order with a lower best likelihood is flagged") {
   const auto model = [](int q, int s, double max_log_l) {
     ModelResult m{Order(q, s), {}, 0, 0.0, {}, {}};
