@@ -9,6 +9,7 @@
 #include "data/csv_reader.hpp"
 #include "diagnosis/diagnosis.hpp"
 #include "diagnosis/diagnosis_record.hpp"
+#include "diagnosis/passive_reference.hpp"
 #include "io/diagnosis_file.hpp"
 #include "io/fit_file.hpp"
 #include "physics/material_spec.hpp"
@@ -102,6 +103,65 @@ void print_summary(const Diagnosis& d, const std::string& path) {
              dropped.empty() ? "" : "\n  dropped (within the decision margin, fewer parameters kept): " + dropped, path);
 }
 
+void print_passive_summary(const PassiveDiagnosis& d, const std::string& path) {
+  fmt::print("reference: the closest passive causal wall; noise sigma {:.3g} (from second differences)\n"
+             "passive bound {:.2f} % = {:.2f}x the noise; largest in the band {:.0f} Hz ({:.0f}-{:.0f} Hz): {:.2f}x\n",
+             d.noise_std, 100.0 * d.bound_before, d.noise_ratio_before, d.band_center_hz, d.band_lo_hz, d.band_hi_hz,
+             d.band_noise_ratio);
+  fmt::print("{:<16} {:>9} {:>12} {:>9}  correction (max likelihood, 95 % interval)\n", "effect", "BF [dB]",
+             "bound after", "x noise");
+  for (const auto& e : d.effects) {
+    std::string params;
+    for (std::size_t k = 0; k < e.priors.size(); ++k)
+      params += fmt::format(" {}={:.4g} [{:.4g}, {:.4g}]", e.priors[k].name, e.best[k], e.lo95[k], e.hi95[k]);
+    for (const auto& p : e.at_bound) params += fmt::format("  ({} at its prior's bound)", p);
+    fmt::print("{:<16} {:>9.1f} {:>11.2f}% {:>9.2f} {}\n", e.name, e.bayes_factor_deciban, 100.0 * e.bound_after,
+               e.noise_ratio_after, params);
+  }
+  if (d.verdict == "consistent" || d.verdict == "unexplained") {
+    fmt::print("verdict: {} ({})\nwrote {}\n", d.verdict,
+               d.verdict == "consistent" ? "within the noise of a passive causal wall"
+                                         : "no chain effect explains the departure from a passive causal wall",
+               path);
+    return;
+  }
+  const PassiveEffect& e = d.effects.front();
+  std::string params;
+  for (std::size_t k = 0; k < e.priors.size(); ++k)
+    params += fmt::format("{}{}={:.4g} [{:.4g}, {:.4g}]", params.empty() ? "" : ", ", e.priors[k].name, e.best[k],
+                          e.lo95[k], e.hi95[k]);
+  fmt::print("verdict: {}{} (BF {:.1f} dB; passive bound {:.2f} % -> {:.2f} %, band {:.0f} Hz)\nwrote {}\n", e.name,
+             params.empty() ? "" : " " + params, e.bayes_factor_deciban, 100.0 * d.bound_before, 100.0 * e.bound_after,
+             d.band_center_hz, path);
+}
+
+/// The corrected data as `fit` reads them (docs/reading-data.md): f_Hz, Re_y, Im_y.
+std::string corrected_csv(const PassiveDiagnosis& d) {
+  std::string out = fmt::format("# {} corrected for {} by admitgen diagnose (passive reference)\nf_Hz,Re_y,Im_y\n",
+                                d.real_path, d.verdict);
+  for (Eigen::Index i = 0; i < d.f_hz.size(); ++i)
+    out += fmt::format("{},{},{}\n", d.f_hz[i], d.corrected[i].real(), d.corrected[i].imag());
+  return out;
+}
+
+int run_passive_reference(const DiagnoseCommand& o) {
+  if (o.fs) throw InputError("--fs needs --fit: the pipeline stages start from a fit");
+  const TubeSetup& tube = o.tube;
+  if (tube.diameter_m || tube.spacing_m || tube.mic1_distance_m) (void)tube.geometry("the tube geometry");
+  const Measurement real = read_measurement(o.real, o.read);
+  ensure_writable_directory(o.out);
+  const PassiveDiagnosis d = diagnose_against_passivity(real, tube, o.settings.threads);
+  const std::string path = (std::filesystem::path(o.out) / "passive_diagnosis.json").string();
+  write_file_atomically(path, io::passive_diagnosis_text(d));
+  if (o.write_corrected) write_file_atomically(*o.write_corrected, corrected_csv(d));
+  if (!o.quiet) {
+    for (const auto& w : d.warnings) fmt::print(stderr, "warning: {}\n", w);
+    print_passive_summary(d, path);
+    if (o.write_corrected) fmt::print("wrote {}\n", *o.write_corrected);
+  }
+  return d.verdict == "consistent" ? 0 : 1;
+}
+
 }  // namespace
 
 void setup_diagnose_command(CLI::App& app, int& exit_code) {
@@ -112,6 +172,8 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
       "  admitgen diagnose --real measured.csv --sim 'miki(sigma=10000, d=50mm)' --tube-diameter 0.1 \\\n"
       "      --mic-spacing 0.05 --mic-distance 0.1 --out diag\n"
       "  admitgen diagnose --real measured.csv --fit out/fit.json --fs 48000 --format q15 --out diag\n"
+      "  admitgen diagnose --real measured.csv --tube-diameter 0.1 --mic-spacing 0.085 --mic-distance 0.235 \\\n"
+      "      --out diag --write-corrected corrected.csv   (no simulation: a passive causal wall is the reference)\n"
       "Decision: none unless an effect reaches 20 dB against no effect (unexplained if the gap is structured);\n"
       "then effects are added while each gains 20 dB (fitted jointly), an earlier one swapped for another when\n"
       "that gains 20 dB, a member dropped when the explanation without it is within 20 dB; unexplained if the\n"
@@ -124,6 +186,11 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
   auto* fit = sub->add_option("--fit", cmd->fit, "fit.json: its selected model is the simulated side");
   sim->excludes(fit);
   sub->add_option("--out,-o", cmd->out, "Output directory (created if missing)")->required();
+  sub->add_option("--reference", cmd->reference,
+                  "sim: the --sim or --fit side; passive: the closest passive causal wall (the default without both)")
+      ->check(CLI::IsMember({"sim", "passive"}));
+  sub->add_option("--write-corrected", cmd->write_corrected,
+                  "With the passive reference: the data corrected for the named effect, as CSV for `fit`");
   sub->add_option("--fs", cmd->fs, "Sample rate [Hz] of the pipeline stages (with --fit)");
   sub->add_option("--format", cmd->format, "Coefficient format of the stages: f32 | q31 | q15")->capture_default_str();
   add_data_options(*sub, cmd->read);
@@ -148,6 +215,10 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
 }
 
 int run_diagnose_command(const DiagnoseCommand& o) {
+  const bool passive = o.reference == "passive" || (!o.sim && !o.fit);
+  if (passive && (o.sim || o.fit)) throw InputError("--reference passive takes neither --sim nor --fit");
+  if (!passive && o.write_corrected) throw InputError("--write-corrected needs the passive reference (no --sim, no --fit)");
+  if (passive) return run_passive_reference(o);
   const DiagnosisRequest request = to_request(o);
   ensure_writable_directory(o.out);
   Progress progress(!o.quiet);

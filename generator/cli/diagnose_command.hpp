@@ -4,6 +4,8 @@
 /// [--fs HZ --format q31] [--tube-diameter M --mic-spacing M --mic-distance M] [--temperature C]`:
 /// where the sim-to-real gap lies, which pipeline stage adds it, which unmodelled effect causes it
 /// and how far it shrinks (diagnosis/diagnosis.hpp). Writes DIR/diagnosis.json and prints a summary.
+/// Without --sim and --fit (or with --reference passive) the reference is the closest passive causal wall
+/// (diagnosis/passive_reference.hpp): DIR/passive_diagnosis.json, and --write-corrected FILE the corrected data.
 /// Exit 0 when the verdict is `none`, 1 when it names an effect (a gap with an identified cause;
 /// diagnosis.json is written in both cases), 2 on bad input (nothing written).
 #pragma once
@@ -26,6 +28,8 @@ struct DiagnoseCommand {
   std::optional<std::string> sim;  ///< a CSV path if such a file exists, else a material SPEC
   std::optional<std::string> fit;
   std::string out;
+  std::string reference = "sim";  ///< "passive": physics is the reference (implied with neither --sim nor --fit)
+  std::optional<std::string> write_corrected;  ///< passive reference: the corrected data as CSV for `fit`
   std::optional<double> fs;
   std::string format = "q31";
   bool format_given = false;

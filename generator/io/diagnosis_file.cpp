@@ -250,6 +250,43 @@ diagnosis::DiagnosisRecord read_diagnosis_file(const std::string& path) {
   return parse_diagnosis(read_bounded(path, kMaxDocumentBytes, "diagnosis"), path);
 }
 
+std::string passive_diagnosis_text(const diagnosis::PassiveDiagnosis& d) {
+  Json doc = Json::object();
+  doc["schema"] = "admitgen.passive_diagnosis/1";
+  doc["real"] = {{"path", d.real_path}, {"sha256", d.real_sha256}, {"points", d.points}, {"scan_points", d.scan_points}};
+  doc["reference"] = "passive";
+  doc["noise_std"] = d.noise_std;
+  doc["passive_bound_before"] = d.bound_before;
+  doc["noise_ratio_before"] = d.noise_ratio_before;
+  doc["band"] = {{"f_lo", d.band_lo_hz}, {"f_hi", d.band_hi_hz}, {"f_center", d.band_center_hz},
+                 {"noise_ratio", d.band_noise_ratio}};
+  Json effects = Json::array();
+  for (const auto& e : d.effects) {
+    Json parameters = Json::array();
+    for (std::size_t k = 0; k < e.priors.size(); ++k)
+      parameters.push_back({{"name", e.priors[k].name},
+                            {"prior", e.priors[k].describe()},
+                            {"best", e.best[k]},
+                            {"mean", e.mean[k]},
+                            {"interval95", {e.lo95[k], e.hi95[k]}}});
+    Json at_bound = Json::array();
+    for (const auto& p : e.at_bound) at_bound.push_back(p);
+    effects.push_back({{"effect", e.name},
+                       {"parameters", parameters},
+                       {"bayes_factor_deciban", e.bayes_factor_deciban},
+                       {"passive_bound_after", e.bound_after},
+                       {"noise_ratio_after", e.noise_ratio_after},
+                       {"at_prior_bound", at_bound},
+                       {"evaluations", e.evaluations}});
+  }
+  doc["effects"] = effects;
+  doc["verdict"] = d.verdict;
+  Json warnings = Json::array();
+  for (const auto& w : d.warnings) warnings.push_back(w);
+  doc["warnings"] = warnings;
+  return doc.dump(2) + "\n";
+}
+
 std::vector<KeyNode> diagnosis_keys() { return record_keys<diagnosis::DiagnosisRecord>(); }
 
 }  // namespace admitgen::io

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "diagnosis/diagnosis_record.hpp"
+#include "diagnosis/passive_reference.hpp"
 #include "io/key_table.hpp"
 
 #include <string>
@@ -26,6 +27,10 @@ diagnosis::DiagnosisRecord parse_diagnosis(const std::string& text, const std::s
 
 /// The keys of diagnosis.json as its field list names them (the table of docs/formats.md, "diagnosis.json").
 std::vector<KeyNode> diagnosis_keys();
+
+/// passive_diagnosis.json's text (docs/formats.md, "passive_diagnosis.json"): `diagnose` with physics as the
+/// reference (diagnosis/passive_reference.hpp), schema "admitgen.passive_diagnosis/1", indented by 2.
+std::string passive_diagnosis_text(const diagnosis::PassiveDiagnosis& diagnosis);
 
 /// Reads and parses the file at `path` (bounded size; FileError if unreadable).
 diagnosis::DiagnosisRecord read_diagnosis_file(const std::string& path);

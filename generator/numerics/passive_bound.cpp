@@ -73,6 +73,9 @@ PassiveBound passive_bound(const Eigen::ArrayXd& omega, const Eigen::ArrayXcd& v
   out.relative_rms_residual = (a * x - b).norm() / b.norm();
   out.terms = static_cast<int>((x.array() > 0.0).count());
   out.dictionary = static_cast<int>(n);
+  const Eigen::VectorXd ax = a * x;
+  out.fitted.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) out.fitted[i] = std::complex<double>(ax[i], ax[m + i]) / weights[i];
   return out;
 }
 

@@ -34,6 +34,7 @@ struct PassiveBound {
   double relative_rms_residual = 0.0;
   int terms = 0;       ///< dictionary terms with a non-zero weight in that fit
   int dictionary = 0;  ///< terms offered
+  Eigen::ArrayXcd fitted;  ///< the best passive fit at each frequency
 };
 
 /// The best passive fit to the complex `values` at angular frequencies `omega` (> 0, rad/s) with weights `weights`

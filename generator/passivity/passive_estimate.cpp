@@ -108,7 +108,7 @@ std::string data_clause(const Measurement& data, double estimate_rms, const nume
       d.negative_points > 0
           ? std::string("no passive wall can follow them")
           : std::string("so their real and imaginary parts are far from those of a causal passive wall "
-                        "(Kramers-Kronig): check the tube's calibration, reference plane and sample mounting");
+                        "(Kramers-Kronig): `admitgen diagnose` with the data alone (no simulation) names the chain effect, if any");
   return fmt::format("{}, but the best passive admittance of any order found fits them at {:.3g} % (the passive "
                      "bound: {} passive terms by non-negative least squares), {}; this estimate is within {:.2f}x of "
                      "that bound",

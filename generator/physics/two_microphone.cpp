@@ -55,6 +55,24 @@ Eigen::ArrayXcd measure_through_chain(const Eigen::ArrayXcd& y_true, const Eigen
   return TwoMicrophoneChain(y_true, f_hz, air, tube).measure(dev);
 }
 
+Eigen::ArrayXcd correct_through_chain(const Eigen::ArrayXcd& y_measured, const Eigen::ArrayXd& f_hz, const Air& air,
+                                      const TubeGeometry& tube, const ChainDeviation& dev) {
+  const double x1 = tube.mic1_distance(), x1_true = x1 + dev.reference_plane_m;
+  const double s_true = tube.spacing() + dev.spacing_error_m;
+  if (!(x1_true - s_true > 0.0 && s_true > 0.0))
+    throw InputError(fmt::format("the chain effects put the microphones at {} m and {} m from the sample; both must be "
+                                 "in front of it, the near one closer",
+                                 x1_true, x1_true - s_true));
+  const Eigen::ArrayXcd h12 = transfer_function(reflection_from_admittance(y_measured), lossless_wavenumber(air, f_hz),
+                                                x1, x1 - tube.spacing()) /
+                              dev.mic_ratio;
+  const Air tube_air = Air::at_celsius(air.temperature_c + dev.temperature_offset_k);
+  const Eigen::ArrayXcd k_true =
+      dev.tube_losses ? lossy_wavenumber(tube_air, f_hz, tube.diameter()) : lossless_wavenumber(tube_air, f_hz);
+  return admittance_from_reflection(reflection_from_transfer(h12, k_true, x1_true, s_true)) *
+         (air.rho_c() / tube_air.rho_c());
+}
+
 TwoMicrophoneChain::TwoMicrophoneChain(Eigen::ArrayXcd y_true, Eigen::ArrayXd f_hz, const Air& air,
                                        const TubeGeometry& tube)
     : y_true_(std::move(y_true)), f_(std::move(f_hz)), air_(air), tube_(tube) {

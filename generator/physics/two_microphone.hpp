@@ -69,6 +69,14 @@ struct ChainDeviation {
 Eigen::ArrayXcd measure_through_chain(const Eigen::ArrayXcd& y_true, const Eigen::ArrayXd& f_hz, const Air& air,
                                       const TubeGeometry& tube, const ChainDeviation& deviation);
 
+/// The inverse of measure_through_chain: the true admittance of a sample whose processed admittance is
+/// y_measured, had the chain deviated by `deviation` (docs/diagnosis.md, "Physics as the reference"). H12 is
+/// recovered from y_measured with the processing's k, x1 and s, divided by the mic ratio, and processed again
+/// with the true chain's k (temperature, losses), x1 + δ_ref and s + δ_s; y_tube is then normalised back by
+/// ρ0c0(T+ΔT)/ρ0c0(T). Throws InputError as measure_through_chain.
+Eigen::ArrayXcd correct_through_chain(const Eigen::ArrayXcd& y_measured, const Eigen::ArrayXd& f_hz, const Air& air,
+                                      const TubeGeometry& tube, const ChainDeviation& deviation);
+
 /// measure_through_chain for one sample, frequency grid, air and tube, with what does not depend on the
 /// deviation computed once (for `diagnose`, which evaluates thousands of deviations): the processing's
 /// e^{2jkx1}, H_I and H_R, and the nominal chain's H12, so a pure microphone mismatch costs one product

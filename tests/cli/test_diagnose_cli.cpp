@@ -122,7 +122,10 @@ TEST_CASE("diagnose CLI: bad input exits 2 and writes nothing") {
   const std::string real = make_real(dir);
   const std::string out = " --out " + dir + "/out";
   const std::vector<std::string> bad{
-      "diagnose --real " + real + out,                                                   // neither --sim nor --fit
+      "diagnose --real " + real + " --reference passive --sim " + kMaterial + out,        // passive takes no --sim
+      "diagnose --real " + real + " --sim " + kMaterial + " --write-corrected c.csv" + out,  // needs the passive reference
+      "diagnose --real " + real + " --tube-diameter 0.1" + out,                           // passive, partial geometry
+      "diagnose --real " + real + " --fs 48000" + out,                                    // passive, --fs without --fit
       "diagnose --real " + real + " --sim 'miki(sigma=10000)'" + out,                    // incomplete SPEC
       "diagnose --real " + dir + "/missing.csv --sim " + kMaterial + out,                // missing file
       "diagnose --real " + real + " --sim " + kMaterial + " --fs 48000" + out,           // --fs without --fit
@@ -134,6 +137,7 @@ TEST_CASE("diagnose CLI: bad input exits 2 and writes nothing") {
     const auto r = run_admitgen(args);
     CHECK(r.exit_code == 2);
     CHECK_FALSE(std::filesystem::exists(dir + "/out/diagnosis.json"));
+    CHECK_FALSE(std::filesystem::exists(dir + "/out/passive_diagnosis.json"));
   }
 }
 
