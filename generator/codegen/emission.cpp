@@ -210,9 +210,9 @@ TemplateContext rate_context(const EmittedRate& r, Format format) {
   // The struct's table pointers: 16-bit (or f32/q31) tables in fir/real/pair; q15 with 32-bit coefficients in
   // fir32/real32/pair32 (runtime/include/admitgen_rt.h).
   const bool wide = r.fixed && r.fixed->wide();
-  c.lists["tables16"] = wide ? std::vector<TemplateContext>{} : std::vector<TemplateContext>{item({})};
-  c.lists["q15_no_tables32"] = format == Format::q15 && !wide ? std::vector<TemplateContext>{item({})} : std::vector<TemplateContext>{};
-  c.lists["q15_tables32"] = wide ? std::vector<TemplateContext>{item({})} : std::vector<TemplateContext>{};
+  c.lists["tables16"] = pad_if(!wide);
+  c.lists["q15_no_tables32"] = pad_if(format == Format::q15 && !wide);
+  c.lists["q15_tables32"] = pad_if(wide);
   return c;
 }
 

@@ -166,6 +166,9 @@ std::vector<double> sample_points(const Spectrum& sp, const std::vector<FeatureW
   return w;
 }
 
+/// Re G at many frequencies at once (the bulk of the decision's samples); empty: one call of the scalar one each.
+using RealPartsFn = std::function<std::vector<double>(const std::vector<double>& omega)>;
+
 /// The decision (docs/passivity.md, "What the certificate guarantees"). Re G is evaluated at the sample points
 /// (sample_points); every local minimum among them is refined by golden section between its neighbours; every
 /// run of samples with Re G < 0 (strictly: no tolerance, so a reported minimum below 0 is always a band) is a
@@ -174,9 +177,6 @@ std::vector<double> sample_points(const Spectrum& sp, const std::vector<FeatureW
 /// eigenvalues leaves the axis); the net catches bands that rounding hides from the eigenvalues entirely (where
 /// residues cancel by many orders of magnitude, |A| ~ 1e9 for |G| ~ 1e3: such a sample, certified before the
 /// net, had Re G = −1225 at 5359 Hz: tests/checks/test_passivity.cpp).
-/// Re G at many frequencies at once (the bulk of the decision's samples); empty: one call of the scalar one each.
-using RealPartsFn = std::function<std::vector<double>(const std::vector<double>& omega)>;
-
 PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale, double lo, double hi,
                        const std::vector<FeatureWindow>& features, int net_per_decade = kNetPerDecade,
                        const RealPartsFn& res = {}) {
@@ -196,12 +196,13 @@ PassivityResult decide(const StateSpace& ss, const RealPartFn& re, double scale,
       const auto m = golden_minimum(re, w[i - 1], w[i + 1]);
       if (m.second < v[i]) refined.push_back(m);
     }
-  for (const auto& m : refined) w.push_back(m.first), v.push_back(m.second);
-  std::vector<std::size_t> idx(w.size());
-  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return w[a] < w[b]; });
+  // The samples and the refined minima in frequency order.
+  std::vector<std::pair<double, double>> merged;
+  for (std::size_t i = 0; i < w.size(); ++i) merged.emplace_back(w[i], v[i]);
+  merged.insert(merged.end(), refined.begin(), refined.end());
+  std::sort(merged.begin(), merged.end());
   std::vector<double> ws, vs;
-  for (std::size_t i : idx) ws.push_back(w[i]), vs.push_back(v[i]);
+  for (const auto& [x, y] : merged) ws.push_back(x), vs.push_back(y);
   ws.push_back(kInf);
   vs.push_back(ss.D);
   r.min_re = ss.D, r.min_at = kInf;
@@ -318,14 +319,6 @@ std::vector<std::complex<double>> hamiltonian_eigenvalues(const StateSpace& ss) 
   std::vector<std::complex<double>> out;
   for (Eigen::Index i = 0; i < eigenvalues.size(); ++i)
     if (eigenvalues[i].imag() >= 0.0) out.push_back(w * eigenvalues[i]);
-  return out;
-}
-
-std::vector<double> hamiltonian_crossings(const StateSpace& ss) {
-  std::vector<double> out;
-  for (const auto l : hamiltonian_eigenvalues(ss))
-    if (near_axis(l)) out.push_back(l.imag());
-  std::sort(out.begin(), out.end());
   return out;
 }
 

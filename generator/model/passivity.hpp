@@ -58,11 +58,6 @@ struct FeatureWindow {
 /// Eigenvalues λ (Im λ ≥ 0) of the Hamiltonian of ss (R = 2D, D ≠ 0), native frequency units.
 std::vector<std::complex<double>> hamiltonian_eigenvalues(const StateSpace& ss);
 
-/// Imaginary-axis eigenvalues ω ≥ 0 of the Hamiltonian of ss, ascending; eigenvalues with
-/// |Re λ| ≤ 1e-5 |λ| count (a tolerance that may add candidates, which the sign evaluation then discards).
-/// Crossings lost to rounding (two crossings closer than it resolves) are found by the decision's windows.
-std::vector<double> hamiltonian_crossings(const StateSpace& ss);
-
 /// The test of a stable realisation (native frequency ω, rad/s for a continuous G); docs/passivity.md, "What
 /// the certificate guarantees". `scan_lo`..`scan_hi` bound the net of direct evaluations (200 points per decade,
 /// the reported minimum's scan; `scan_minimum` false: 32, for certifiers in a loop whose result is certified
