@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 
 /// Options of `fit` that a unit's run does not depend on (only the merge uses them): changing them
 /// re-runs no unit.
-const std::set<std::string> kMergeOnlyFitKeys{"qmax", "smax", "select", "missed-mode-retries", "grid-growth"};
+const std::set<std::string> kMergeOnlyFitKeys{"qmax",        "smax",       "select",     "missed-mode-retries",
+                                               "grid-growth", "target-alpha", "target-rms", "max-buffers"};
 /// Keys of a material that are not options of fit or emit.
 const std::set<std::string> kMaterialKeys{"name", "data"};
 /// Options of fit and emit that a manifest may not set, and why.

@@ -48,7 +48,12 @@ std::size_t select_usable(const FitSettings& settings, const std::vector<ModelRe
 std::string target_met_note(const Measurement& data, const FitSettings& settings, const std::vector<ModelResult>& models,
                             std::size_t selected, bool would_grow) {
   const ModelResult& sel = models[selected];
-  if (!sel.accuracy || !sel.accuracy->meets) return {};
+  if (!sel.accuracy) return {};
+  if (!sel.accuracy->meets)
+    return would_grow ? fmt::format("the data support more poles (ln Z still rises towards the orders beyond {}), "
+                                    "which were not fitted: more poles cannot meet the target (see its warning)",
+                                    sel.order.name())
+                      : std::string{};
   std::size_t top = selected;
   for (std::size_t i = 0; i < models.size(); ++i)
     if (!runs_disagree(models[i]) && models[i].run.log_z > models[top].run.log_z) top = i;
@@ -65,8 +70,45 @@ std::string target_met_note(const Measurement& data, const FitSettings& settings
                      sel.order.name(), met);
 }
 
-std::string target_missed_warning(const FitSettings& settings, const std::vector<ModelResult>& models,
-                                  std::size_t selected) {
+std::string target_out_of_reach(const Measurement& data, const FitSettings& settings, const ModelResult& selected,
+                                const passivity::LazyPassiveBound& bound) {
+  if (settings.target.max_band_delta_alpha <= 0.0 || !selected.accuracy || selected.accuracy->meets) return {};
+  const OrderAccuracy& a = *selected.accuracy;
+  const passivity::PassiveEstimate& p = selected.passive;
+  // A residual without correlation along frequency is the measurement's noise: no order follows it.
+  constexpr double kNoiseLag1 = 0.5;
+  if (a.residual_lag1 < kNoiseLag1)
+    return fmt::format("the residual there is noise (its lag-1 autocorrelation over frequency is {:.2f}), which "
+                       "alone moves α by that much at single points; no order can meet a target below the data's "
+                       "noise: relax {}", a.residual_lag1, setting("target.max_band_delta_alpha"));
+  // Passivity, not the order, limits what ships: the passive estimate costs more than kCostRatio over the best
+  // sample, and the closest passive admittance of any order (the passive bound, a dense dictionary of passive
+  // terms: docs/passivity.md, "The passive bound") misses the target too.
+  if (p.relative_rms_residual > passivity::PassiveEstimate::kCostRatio * p.best_sample_relative_rms_residual) {
+    const OrderAccuracy b = curve_accuracy(data, bound.get().fitted, settings.target);
+    if (!b.meets)
+      return fmt::format("passivity, not the order, limits what ships: the passive estimate fits at {:.3g} relative "
+                         "RMS against the best sample's {:.3g}, and the closest passive admittance of any order (the "
+                         "passive bound) misses the target too, at |Δα| = {:.3f} in the {:.0f} Hz band ({:.3g} "
+                         "relative RMS), so more poles cannot meet it; `admitgen diagnose` with the data alone names "
+                         "the measurement-chain effect, if any", p.relative_rms_residual,
+                         p.best_sample_relative_rms_residual, b.max_band_delta_alpha, b.worst_band_hz, b.relative_rms);
+  }
+  // A spike of at most kSpikePoints points is narrower than any pole pair the data can resolve: an artefact of the
+  // measurement more likely than a feature of the material. Out of reach when the order meets the target beside it.
+  constexpr int kSpikePoints = 3;
+  if (a.peak_points <= kSpikePoints && a.max_band_delta_alpha_beside_peak <= settings.target.max_band_delta_alpha)
+    return fmt::format("the data hold a spike at {:.6g} Hz {} point(s) wide that no smooth model follows (a "
+                       "measurement artefact, or a resonance narrower than the frequency step), and beside it {} "
+                       "meets the target (|Δα| ≤ {:.3f}): check the data there, or leave it out ({})",
+                       a.peak_hz, a.peak_points, selected.order.name(), a.max_band_delta_alpha_beside_peak,
+                       setting("band"));
+  return {};
+}
+
+std::string target_missed_warning(const Measurement& data, const FitSettings& settings,
+                                  const std::vector<ModelResult>& models, std::size_t selected,
+                                  const passivity::LazyPassiveBound& bound) {
   for (const auto& m : models)
     if (m.accuracy && m.accuracy->meets && (settings.max_buffers <= 0 || m.order.buffers() <= settings.max_buffers))
       return {};
@@ -77,19 +119,13 @@ std::string target_missed_warning(const FitSettings& settings, const std::vector
       "no fitted order meets the accuracy target ({}): the selected {} misses it most in the {:.0f} Hz band (|Δα| = "
       "{:.3f}, relative RMS {:.3g})", settings.target.describe(), sel.order.name(), a.worst_band_hz,
       a.max_band_delta_alpha, a.relative_rms);
-  // A residual without correlation along frequency is the measurement's noise: no order follows it.
-  constexpr double kNoiseLag1 = 0.5;
-  if (a.residual_lag1 < kNoiseLag1)
-    return fmt::format("{}: the residual there is noise (its lag-1 autocorrelation over frequency is {:.2f}), which "
-                       "alone moves α by that much at single points; no order can meet a target below the data's "
-                       "noise: relax {}", missed, a.residual_lag1, setting("target.max_band_delta_alpha"));
-  // A spike of at most kSpikePoints points is narrower than any pole pair the data can resolve: an artefact of the
-  // measurement more likely than a feature of the material.
+  if (const std::string why = target_out_of_reach(data, settings, sel, bound); !why.empty()) return missed + ": " + why;
   constexpr int kSpikePoints = 3;
   if (a.peak_points <= kSpikePoints)
     return fmt::format("{}, where the data hold a spike at {:.6g} Hz {} point(s) wide that no smooth model follows (a "
-                       "measurement artefact, or a resonance narrower than the frequency step): check the data there, "
-                       "or leave it out ({})", missed, a.peak_hz, a.peak_points, setting("band"));
+                       "measurement artefact, or a resonance narrower than the frequency step), and beside it |Δα| "
+                       "reaches {:.3f}: check the data there, or leave it out ({})", missed, a.peak_hz,
+                       a.peak_points, a.max_band_delta_alpha_beside_peak, setting("band"));
   return fmt::format("{}, where the data hold a feature at {:.6g} Hz about {:.3g} Hz wide that the model does not "
                      "follow (it needs a pole pair of its own: allow larger orders, {} or {}, or relax {})",
                      missed, a.peak_hz, a.peak_width_hz, setting("max_buffers"), setting("grid_growth"),

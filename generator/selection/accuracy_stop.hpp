@@ -25,12 +25,22 @@ void estimate_passive(const Measurement& data, const FitSettings& settings, std:
 std::size_t select_usable(const FitSettings& settings, const std::vector<ModelResult>& models);
 
 /// The note of a met target while the evidence would rise further (empty when it would not): `would_grow` says
-/// that growth would have added orders around the selection.
+/// that growth would have added orders around the selection. For a missed target, a note only when growth stopped
+/// because the target is out of reach (target_out_of_reach) while the evidence would still have grown.
 std::string target_met_note(const Measurement& data, const FitSettings& settings, const std::vector<ModelResult>& models,
                             std::size_t selected, bool would_grow);
 
+/// Why more poles cannot bring the selected order's passive estimate to the target, or empty when they might (or
+/// it meets the target, or there is none): its residual is the data's noise; or passivity costs its estimate more
+/// than PassiveEstimate::kCostRatio and the closest passive admittance of any order (`bound`) misses the target
+/// too; or it misses only at a spike narrower than any pole pair the data resolve. Growth stops there
+/// (grid_growth.hpp).
+std::string target_out_of_reach(const Measurement& data, const FitSettings& settings, const ModelResult& selected,
+                                const passivity::LazyPassiveBound& bound);
+
 /// The warning of a target no fitted order meets, naming the selected order's worst band and the feature there.
-std::string target_missed_warning(const FitSettings& settings, const std::vector<ModelResult>& models,
-                                  std::size_t selected);
+std::string target_missed_warning(const Measurement& data, const FitSettings& settings,
+                                  const std::vector<ModelResult>& models, std::size_t selected,
+                                  const passivity::LazyPassiveBound& bound);
 
 }  // namespace admitgen

@@ -27,13 +27,16 @@ std::vector<int> point_bands(const Eigen::ArrayXd& f_hz) {
   return bands;
 }
 
-/// max over the points of covered bands of |a_i − b_i|, and the index of that point (−1 when no band is covered).
-double max_in_bands(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXd& a, const Eigen::ArrayXd& b, Eigen::Index* at) {
+/// max over the points of covered bands of |a_i − b_i|, and the index of that point (−1 when no band is covered);
+/// the points skip_lo … skip_hi left out.
+double max_in_bands(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXd& a, const Eigen::ArrayXd& b, Eigen::Index* at,
+                    Eigen::Index skip_lo = 0, Eigen::Index skip_hi = -1) {
   const std::vector<int> bands = point_bands(f_hz);
   double worst = 0.0;
   Eigen::Index where = -1;
   for (Eigen::Index i = 0; i < f_hz.size(); ++i) {
     const double d = std::abs(a(i) - b(i));
+    if (i >= skip_lo && i <= skip_hi) continue;
     if (bands[static_cast<std::size_t>(i)] >= 0 && (where < 0 || d > worst)) {
       worst = d;
       where = i;
@@ -55,7 +58,11 @@ std::string AccuracyTarget::describe() const {
 OrderAccuracy order_accuracy(const Measurement& data, const Order& order, const Eigen::VectorXd& theta,
                              const AccuracyTarget& target) {
   ADMITGEN_ENSURE(theta.size() == order.dim(), "theta {} for {}", theta.size(), order.name());
-  const Eigen::ArrayXcd g = evaluate_multipole(order, theta, data.omega());
+  return curve_accuracy(data, evaluate_multipole(order, theta, data.omega()), target);
+}
+
+OrderAccuracy curve_accuracy(const Measurement& data, const Eigen::ArrayXcd& g, const AccuracyTarget& target) {
+  ADMITGEN_ENSURE(g.size() == data.size(), "{} model values for {} data points", g.size(), data.size());
   OrderAccuracy out;
   out.relative_rms = std::sqrt((data.y - g).abs2().sum() / data.y.abs2().sum());
   const Eigen::ArrayXcd r = data.y - g;
@@ -63,7 +70,9 @@ OrderAccuracy order_accuracy(const Measurement& data, const Order& order, const 
     out.residual_lag1 =
         (r.head(r.size() - 1) * r.tail(r.size() - 1).conjugate()).real().sum() / r.abs2().sum();
   Eigen::Index at = -1;
-  out.max_band_delta_alpha = max_in_bands(data.f_hz, absorption(g), absorption(data.y), &at);
+  const Eigen::ArrayXd alpha_model = absorption(g), alpha_data = absorption(data.y);
+  out.max_band_delta_alpha = max_in_bands(data.f_hz, alpha_model, alpha_data, &at);
+  out.max_band_delta_alpha_beside_peak = out.max_band_delta_alpha;
   if (at >= 0) {
     out.worst_band_hz = band_center(band_index(data.f_hz(at)));
     // The residual's peak inside the worst band, and its width at half height.
@@ -79,6 +88,7 @@ OrderAccuracy order_accuracy(const Measurement& data, const Order& order, const 
       out.peak_hz = data.f_hz(peak);
       out.peak_width_hz = data.f_hz(hi) - data.f_hz(lo);
       out.peak_points = static_cast<int>(hi - lo + 1);
+      out.max_band_delta_alpha_beside_peak = max_in_bands(data.f_hz, alpha_model, alpha_data, nullptr, lo, hi);
     }
   }
   out.meets = out.max_band_delta_alpha <= target.max_band_delta_alpha &&

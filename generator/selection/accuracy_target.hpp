@@ -46,6 +46,9 @@ struct OrderAccuracy {
   /// above half its peak, in Hz): what the model misses there, e.g. a narrow spike of the data.
   double peak_hz = 0.0, peak_width_hz = 0.0;
   int peak_points = 0;  ///< data points of that peak
+  /// max_b Δα_b over the covered points outside that peak: what the model misses beside it (equal to
+  /// max_band_delta_alpha when the largest |Δα| lies elsewhere).
+  double max_band_delta_alpha_beside_peak = 0.0;
   /// Lag-1 autocorrelation of the residual r = D − G over frequency, Re Σ r_i r̄_{i+1} / Σ |r_i|²: near 0 for
   /// measurement noise, near 1 for structure the model misses (0.97-0.99 on the bundled files' selected orders).
   double residual_lag1 = 0.0;
@@ -55,6 +58,8 @@ struct OrderAccuracy {
 /// The accuracy of (order, theta) against `data` under `target`.
 OrderAccuracy order_accuracy(const Measurement& data, const Order& order, const Eigen::VectorXd& theta,
                              const AccuracyTarget& target);
+/// The same for any admittance curve `g` at the data's frequencies (e.g. the passive bound's fit).
+OrderAccuracy curve_accuracy(const Measurement& data, const Eigen::ArrayXcd& g, const AccuracyTarget& target);
 
 /// The largest change of absorption between two model curves over the data's covered bands:
 /// max_i | α(G_a,i) − α(G_b,i) | (what the larger order would change, in the note of a met target).

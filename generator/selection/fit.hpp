@@ -167,10 +167,7 @@ struct MissedMode {
   /// Compared on the pole sampler's marginal L(ψ) (selection/reduced_model.hpp) rather than on ln L.
   bool marginal = false;
 };
-/// Both checks; the second needs the data and the priors (skipped for `passive` fits, whose likelihood
-/// also needs the reduced model passive).
-std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
-                                     const std::vector<ModelResult>& models, double tolerance = 2.0);
+/// (Both checks, with the data: selection/missed_modes.hpp.)
 /// The check by contained orders alone.
 std::vector<MissedMode> missed_modes(const std::vector<ModelResult>& models, double tolerance = 2.0);
 /// The readable form of a missed_modes result, one warning per order.

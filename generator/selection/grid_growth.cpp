@@ -3,6 +3,7 @@
 
 #include "core/errors.hpp"
 #include "inference/evidence.hpp"
+#include "selection/accuracy_stop.hpp"
 
 #include <fmt/format.h>
 
@@ -126,6 +127,49 @@ std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, s
                            rise.fit->order.name());
   step.reason = fmt::format("{} lies on {} of the fitted orders ({}): added {}", chosen.name(), edge, gains, added);
   return step;
+}
+
+GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, FittedOrders& orders,
+                     OrderMarginals& marginals, double first_round_passes, const passivity::LazyPassiveBound& bound,
+                     bool& would_grow, Progress& progress) {
+  GridGrowth growth{settings.qmax, settings.smax, {}, {}};
+  const int k = real_data_count(settings.data_count, data.size());
+  const double budget = std::max(first_round_passes, kMinGrowthBudgetPasses);
+  double spent = 0.0;
+  for (;;) {
+    estimate_passive(data, settings, orders.results, bound);
+    const std::size_t selected = select_usable(settings, orders.results);
+    const ModelResult& chosen = orders.results[selected];
+    auto step = next_grid_step(orders.results, selected, settings, k, static_cast<long>(data.size()), spent, budget,
+                               growth.edge);
+    if (step && settings.max_buffers > 0) {
+      const auto over = [&](const Order& o) { return o.buffers() > settings.max_buffers; };
+      step->add.erase(std::remove_if(step->add.begin(), step->add.end(), over), step->add.end());
+      if (step->add.empty()) {
+        growth.edge = fmt::format("{} lies on the edge of the fitted orders and the evidence still rises, but the "
+                                  "next orders exceed the budget of {} buffers per node ({})",
+                                  chosen.order.name(), settings.max_buffers, setting("max_buffers"));
+        step.reset();
+      }
+    }
+    // The target met, or out of reach of more poles (its warning says why): larger orders are not fitted, and
+    // what they would add is a note, not a warning.
+    if ((chosen.accuracy && chosen.accuracy->meets) || !target_out_of_reach(data, settings, chosen, bound).empty()) {
+      would_grow = step.has_value() || !growth.edge.empty();
+      growth.edge.clear();
+      return growth;
+    }
+    if (!step) return growth;
+    progress.message(step->reason);
+    growth.steps.push_back(step->reason);
+    spent += step->passes;
+    for (const Order& o : step->add) {
+      growth.qmax = std::max(growth.qmax, o.q());
+      growth.smax = std::max(growth.smax, o.s());
+    }
+    add_orders(data, settings, orders, step->add, progress);
+    rerun_missed_modes(data, settings, orders, marginals, progress);
+  }
 }
 
 }  // namespace admitgen

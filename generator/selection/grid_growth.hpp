@@ -26,8 +26,13 @@
 ///     grow with the dimension (docs/method.md, "Growing the grid").
 #pragma once
 
+#include "core/progress.hpp"
+#include "data/measurement.hpp"
 #include "model/order.hpp"
+#include "passivity/passive_estimate.hpp"
 #include "selection/fit.hpp"
+#include "selection/order_marginals.hpp"
+#include "selection/order_runs.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -60,5 +65,14 @@ struct GridStep {
 std::optional<GridStep> next_grid_step(const std::vector<ModelResult>& models, std::size_t selected,
                                        const FitSettings& settings, int real_data_values, long points,
                                        double spent_passes, double budget_passes, std::string& refusal);
+
+/// Grows `orders` while the selected order lies on their edge, its passive estimate misses the accuracy target
+/// and more poles might reach it (selection/accuracy_stop.hpp, target_out_of_reach): runs the added orders and the
+/// re-runs they call for, and estimates every order's passive model. `would_grow` is set when the target (met or
+/// out of reach) stopped a growth the evidence asked for; the result's `edge` is then empty (a note, not a
+/// warning).
+GridGrowth grow_grid(const Measurement& data, const FitSettings& settings, FittedOrders& orders,
+                     OrderMarginals& marginals, double first_round_passes, const passivity::LazyPassiveBound& bound,
+                     bool& would_grow, Progress& progress);
 
 }  // namespace admitgen

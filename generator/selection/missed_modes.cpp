@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <optional>
 
 namespace admitgen {
@@ -41,15 +40,10 @@ bool pole_sampled(const ModelResult& m) { return m.sampler == kPoleSamplerName; 
 /// selection"), between every pair of orders one of which contains the other: the larger order's peak with
 /// its surplus poles dropped against the smaller's, and the smaller's peak completed by the larger's surplus
 /// poles against the larger's.
-std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const FitSettings& settings,
-                                              const std::vector<ModelResult>& models, double tolerance) {
-  // One marginal per order, shared by its peak and every pair it takes part in.
-  std::deque<ResidueEvidence> evidence;
+std::vector<MissedMode> marginal_missed_modes(const std::vector<ModelResult>& models, OrderMarginals& marginals,
+                                              double tolerance) {
   std::vector<MarginalPeak> peak;
-  for (const ModelResult& m : models) {
-    evidence.emplace_back(data, m.order, settings.data_count, settings.priors.admittance_scale);
-    peak.push_back(marginal_peak(evidence.back(), m.order, m.run, m.live));
-  }
+  for (const ModelResult& m : models) peak.push_back(marginals.peak(m));
   std::vector<std::optional<MissedMode>> worst(models.size());
   const auto flag = [&](std::size_t order, std::size_t shown, double log_l, bool larger) {
     if (log_l > peak[order].log_l + tolerance && (!worst[order] || log_l > worst[order]->reference_log_l))
@@ -63,8 +57,8 @@ std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const Fit
         continue;
       const double* theta_small = models[small].run.point(peak[small].row);
       const double* theta_big = models[big].run.point(peak[big].row);
-      flag(small, big, reduced_log_marginal(evidence[small], s, b, theta_big), true);
-      flag(big, small, completed_log_marginal(evidence[big], s, theta_small, b, theta_big), false);
+      flag(small, big, reduced_log_marginal(marginals.of(s), s, b, theta_big), true);
+      flag(big, small, completed_log_marginal(marginals.of(b), s, theta_small, b, theta_big), false);
     }
   std::vector<MissedMode> missed;
   for (const auto& m : worst)
@@ -75,9 +69,10 @@ std::vector<MissedMode> marginal_missed_modes(const Measurement& data, const Fit
 }  // namespace
 
 std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
-                                     const std::vector<ModelResult>& models, double tolerance) {
+                                     const std::vector<ModelResult>& models, OrderMarginals& marginals,
+                                     double tolerance) {
   if (!models.empty() && std::all_of(models.begin(), models.end(), pole_sampled))
-    return marginal_missed_modes(data, settings, models, tolerance);
+    return marginal_missed_modes(models, marginals, tolerance);
   std::vector<MissedMode> missed = missed_modes(models, tolerance);
   if (settings.passive) return missed;
   for (std::size_t small = 0; small < models.size(); ++small) {

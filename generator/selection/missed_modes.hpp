@@ -6,8 +6,16 @@
 #pragma once
 
 #include "selection/fit.hpp"
+#include "selection/order_marginals.hpp"
 
 namespace admitgen {
+
+/// Both checks of MissedMode (selection/fit.hpp); the second needs the data and the priors (skipped for `passive`
+/// fits, whose likelihood also needs the reduced model passive). Runs of the pole sampler are compared on their
+/// marginals, taken from `marginals` (built once per order for the whole fit).
+std::vector<MissedMode> missed_modes(const Measurement& data, const FitSettings& settings,
+                                     const std::vector<ModelResult>& models, OrderMarginals& marginals,
+                                     double tolerance = 2.0);
 
 /// Whether an order's independent runs disagree by more than the largest gap a note explains (its error, from
 /// their scatter, above RerunCheck::kMaxGapNats): one found evidence another missed, and its ln Z is undetermined.

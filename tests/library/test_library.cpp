@@ -141,7 +141,8 @@ TEST_CASE("library: editing one data file re-runs only that material's units, em
   // Emit settings and the merge-only fit settings (grid, selection) re-run no unit.
   write_text(manifest, read_text(manifest) + "\n");
   std::string m = read_text(manifest);
-  m.replace(m.find("fs = [48000]"), 12, "fs = [48000, 96000]\nselect = \"cheapest:10\"");
+  m.replace(m.find("fs = [48000]"), 12,
+            "fs = [48000, 96000]\nselect = \"cheapest:10\"\ntarget-alpha = 0.02\ntarget-rms = 0.05\nmax-buffers = 6");
   write_text(manifest, m);
   CHECK(run_admitgen("library plan " + q(manifest) + " --out " + q(out)).output.find("12 up to date, 0 to run") !=
         std::string::npos);

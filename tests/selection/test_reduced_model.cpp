@@ -5,6 +5,8 @@
 #include "inference/residue_evidence.hpp"
 #include "inference/synthetic_data.hpp"
 #include "selection/fit.hpp"
+#include "selection/missed_modes.hpp"
+#include "selection/order_marginals.hpp"
 #include "selection/reduced_model.hpp"
 
 #include <doctest/doctest.h>
@@ -13,7 +15,17 @@
 
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <vector>
+
+namespace {
+/// A fit's marginals, built anew for each check below (their models differ from call to call).
+admitgen::OrderMarginals& fresh_marginals(const admitgen::Measurement& data, const admitgen::FitSettings& settings) {
+  static std::unique_ptr<admitgen::OrderMarginals> marginals;
+  marginals = std::make_unique<admitgen::OrderMarginals>(data, settings.data_count, settings.priors.admittance_scale);
+  return *marginals;
+}
+}  // namespace
 
 using namespace admitgen;
 
@@ -149,7 +161,7 @@ TEST_CASE("missed modes: a smaller order below what the larger order's best show
   REQUIRE(models[1].run.max_log_likelihood > models[0].run.max_log_likelihood + 100.0);
   // The check by contained orders sees nothing (Q2S1 is the better one); the check by larger orders does.
   CHECK(missed_modes(models).empty());
-  const auto missed = missed_modes(data, settings, models);
+  const auto missed = missed_modes(data, settings, models, fresh_marginals(data, settings));
   REQUIRE(missed.size() == 1);
   CHECK(missed[0].order == 0);
   CHECK(missed[0].contained == 1);
@@ -163,7 +175,7 @@ TEST_CASE("missed modes: a smaller order below what the larger order's best show
         std::string::npos);
   // With the Q1S1 run at the truth's poles nothing is missed.
   const std::vector<ModelResult> fine{one_point_run(Order(1, 1), ls), models[1]};
-  CHECK(missed_modes(data, settings, fine).empty());
+  CHECK(missed_modes(data, settings, fine, fresh_marginals(data, settings)).empty());
 }
 
 TEST_CASE("missed modes of the pole sampler: compared on the marginal of the poles, both ways") {
@@ -184,7 +196,7 @@ TEST_CASE("missed modes of the pole sampler: compared on the marginal of the pol
 
   SUBCASE("the smaller run is flagged by the larger run's poles with the spurious one dropped") {
     const std::vector<ModelResult> models{one_point_run(Order(1, 1), poor), one_point_run(Order(2, 1), larger())};
-    const auto missed = missed_modes(data, settings, models);
+    const auto missed = missed_modes(data, settings, models, fresh_marginals(data, settings));
     REQUIRE(missed.size() == 1);
     CHECK(missed[0].order == 0);
     CHECK(missed[0].contained == 1);
@@ -200,7 +212,7 @@ TEST_CASE("missed modes of the pole sampler: compared on the marginal of the pol
     Eigen::VectorXd big_poor = larger();
     big_poor[4] = 2000.0;  // its second real pole, the one that should sit at 8000 s⁻¹
     const std::vector<ModelResult> models{one_point_run(Order(1, 1), truth()), one_point_run(Order(2, 1), big_poor)};
-    const auto missed = missed_modes(data, settings, models);
+    const auto missed = missed_modes(data, settings, models, fresh_marginals(data, settings));
     REQUIRE(missed.size() == 1);
     CHECK(missed[0].order == 1);
     CHECK(missed[0].contained == 0);
@@ -218,6 +230,6 @@ TEST_CASE("missed modes of the pole sampler: compared on the marginal of the pol
     big[4] = 8000.0;
     big[2] = q2s1(with_3000.data()) > q2s1(with_8000.data()) ? 3000.0 : 8000.0;
     const std::vector<ModelResult> models{one_point_run(Order(1, 1), truth()), one_point_run(Order(2, 1), big)};
-    CHECK(missed_modes(data, settings, models).empty());
+    CHECK(missed_modes(data, settings, models, fresh_marginals(data, settings)).empty());
   }
 }
