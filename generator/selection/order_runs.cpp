@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 #include "core/parallel.hpp"
 #include "inference/comparison.hpp"
+#include "inference/pole_space.hpp"
 #include "inference/poles_sampler.hpp"
 #include "inference/run_merge.hpp"
 #include "selection/fit_cost.hpp"
