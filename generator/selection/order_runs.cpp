@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The nested-sampling runs of a fit's orders: first runs (split into FitSettings::runs independent parts),
+// The nested-sampling runs of a fit's orders: each order as a model of the data (order_model, order_sampler,
+// order_seed, with_band_priors: selection/fit.hpp), first runs (split into FitSettings::runs independent parts),
 // re-run rounds for missed modes, and their merges (inference/run_merge.hpp; docs/method.md, "Model selection").
 #include "selection/order_runs.hpp"
 
@@ -9,14 +10,58 @@
 #include "inference/pole_space.hpp"
 #include "inference/poles_sampler.hpp"
 #include "inference/run_merge.hpp"
+#include "model/passivity.hpp"
 #include "selection/fit_cost.hpp"
 #include "selection/missed_modes.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <numeric>
 
 namespace admitgen {
+
+std::uint64_t order_seed(std::uint64_t user_seed, const Order& order) {
+  return Comparison::job_seed(user_seed,
+                              static_cast<std::uint64_t>(order.q()) * 1000u + static_cast<std::uint64_t>(order.s()));
+}
+
+SamplerKind parse_sampler_kind(const std::string& text) {
+  if (text == "poles") return SamplerKind::poles;
+  if (text == "full") return SamplerKind::full;
+  throw InputError(fmt::format("{} '{}': expected poles or full", setting("sampler_kind"), text));
+}
+
+Model order_model(const Measurement& data, const Order& order, const FitSettings& settings) {
+  const auto transform = std::make_shared<const PriorTransform>(order, settings.priors, settings.reduce_symmetry);
+  const auto likelihood = std::make_shared<const Likelihood>(data, order, settings.data_count);
+  LogLikelihoodFn log_likelihood = [likelihood](const double* th) { return (*likelihood)(th); };
+  if (settings.passive)
+    log_likelihood = [likelihood, order](const double* th) {
+      return is_passive(order, th) ? (*likelihood)(th) : -std::numeric_limits<double>::infinity();
+    };
+  return Model{order.parameter_names(), [transform](const double* u, double* th) { (*transform)(u, th); },
+               std::move(log_likelihood), [transform](double* u) { transform->fold(u); }};
+}
+
+SamplerKind order_sampler(const FitSettings& settings, std::string* note) {
+  if (settings.sampler_kind == SamplerKind::full) return SamplerKind::full;
+  std::string why;
+  if (settings.passive)
+    why = "sampling passive models only (" + setting("passive") + ") needs the residues in the sampled space";
+  else if (settings.priors.residues == ResiduePrior::uniform)
+    why = "the uniform residue prior (" + settings.priors_origin + ") has no closed-form marginal: residues sampled";
+  if (why.empty()) return SamplerKind::poles;
+  if (note != nullptr) *note = why;
+  return SamplerKind::full;
+}
+
+FitSettings with_band_priors(FitSettings settings, const Measurement& data) {
+  if (settings.priors.band_of_data)
+    settings.priors = PriorRanges::band(data.omega().maxCoeff(), settings.priors.admittance_scale);
+  return settings;
+}
 
 /// Each of an order's first runs needs live points of its own to sample with (kMinLivePerRun).
 void check_runs(const FitSettings& settings) {
