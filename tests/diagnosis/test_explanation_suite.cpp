@@ -273,6 +273,39 @@ TEST_SUITE("statistical") {
     REQUIRE(record.verdict.main_cause);
     CHECK(record.verdict.main_cause->effect == "mic_mismatch");
   }
+
+  // A microphone calibration off by 15 % (a real fault; docs/diagnosis.md, "A parameter at its prior's
+  // bound") with an edge gap, composed by the other route on the Delany-Bazley base: inside the gain prior
+  // [−0.25, 0.25], named exactly with the gain within 0.01 of the truth and nothing at a prior bound.
+  // One off by 40 % lies beyond the prior: the gain is held at the bound 0.25, and the verdict, the
+  // terminal's text and diagnosis.json say so, with the fix. About 3 s of CPU together.
+  TEST_CASE("explanation suite: a calibration off by 15 % is named; one off by 40 % is stated at its prior's bound") {
+    const auto inside = case_labelled(partner_cases(), "partner delany_bazley: mic_mismatch:gain=0.15");
+    const auto d = diagnosis::run_diagnosis(case_request(inside));
+    CHECK(named_exactly(d.verdict, inside));
+    CHECK(d.verdict.at_prior_bound.empty());
+    for (const auto& m : d.verdict.explanation)
+      if (m.effect == "mic_mismatch") CHECK(std::abs(m.parameters.front().second - 0.15) < 0.01);
+
+    ValidationCase beyond;
+    beyond.material = base_materials()[0];
+    beyond.truth = "mic_mismatch";
+    beyond.effect = "mic_mismatch:gain=0.4,phase_deg=2";
+    beyond.seed = 2300;
+    const auto far = diagnosis::run_diagnosis(case_request(beyond));
+    REQUIRE(explains(far.verdict, "mic_mismatch"));
+    REQUIRE_FALSE(far.verdict.at_prior_bound.empty());
+    const auto& hit = far.verdict.at_prior_bound.front();
+    CHECK(hit.effect == "mic_mismatch");
+    CHECK(hit.parameter == "gain");
+    CHECK(hit.upper);
+    CHECK(hit.bound == 0.25);
+    CHECK(hit.mean > 0.24);
+    CHECK(diagnosis::prior_bound_text(hit).find("calibrate the microphones") != std::string::npos);
+    const std::string json = io::diagnosis_text(diagnosis::diagnosis_record(far));
+    CHECK(json.find("\"at_prior_bound\"") != std::string::npos);
+    CHECK(io::diagnosis_text(io::parse_diagnosis(json, "written")) == json);  // read back byte for byte
+  }
 }
 
 }  // namespace admitgen::test
