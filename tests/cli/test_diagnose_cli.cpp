@@ -166,7 +166,7 @@ TEST_CASE("diagnose CLI: a verdict of none exits 0") {
   CHECK(r.exit_code == 0);
 }
 
-TEST_CASE("diagnose CLI: a parameter held by its prior's bound is stated on the terminal and in diagnosis.json") {
+TEST_CASE("diagnose CLI: a parameter held by a prior bound is stated on the terminal and in diagnosis.json") {
   // A microphone calibration 40 % off, beyond the gain prior [-0.25, 0.25] (docs/diagnosis.md, "A parameter
   // at its prior's bound"): the gain sits at 0.25, and the summary and the file say so with the fix.
   const std::string dir = scratch_dir("diagnose_cli_bound");

@@ -286,7 +286,7 @@ TEST_SUITE("statistical") {
   // [−0.25, 0.25], named exactly with the gain within 0.01 of the truth and nothing at a prior bound.
   // One off by 40 % lies beyond the prior: the gain is held at the bound 0.25, and the verdict, the
   // terminal's text and diagnosis.json say so, with the fix. About 3 s of CPU together.
-  TEST_CASE("explanation suite: a calibration off by 15 % is named; one off by 40 % is stated at its prior's bound") {
+  TEST_CASE("explanation suite: a calibration off by 15 % is named, one off by 40 % is stated at its prior bound") {
     const auto inside = case_labelled(partner_cases(), "partner delany_bazley: mic_mismatch:gain=0.15");
     const auto d = diagnosis::run_diagnosis(case_request(inside));
     CHECK(named_exactly(d.verdict, inside));
