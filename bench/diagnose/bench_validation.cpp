@@ -14,10 +14,11 @@
 ///   exactly (the explanation is the case's effects and nothing else, residual white;
 ///   explanation_cases.hpp), and without a passenger (no member outside the case's effects).
 /// Usage: bench_validation [two|material|oov|oov-gaps|three|catalogue-effect|mimic|partner|four|all] [--live N] [--threads N] [--stride K]
-///   [--from I] [--only TEXT] [--parameters] [--rounds]
+///   [--from I] [--only TEXT] [--parameters] [--rounds] [--screen-live N]
 ///   (default all, 60 live points, all cores, every case; --stride K runs every K-th case of each set,
 ///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT,
-///   --parameters prints every member's parameters, --rounds every joint run of the combined search).
+///   --parameters prints every member's parameters, --rounds every joint run of the combined search,
+///   --screen-live N the live points of the combined search's screening runs).
 /// A case costs 0.1-62 s of CPU (docs/diagnosis.md: most of it in cases that run every round, out of
 /// vocabulary), the 85 cases together well under an hour of CPU; the compact CTest runs a fixed-seed subset.
 #include "explanation_cases.hpp"
@@ -46,6 +47,7 @@ struct Options {
   std::string only;        ///< run only the cases whose label contains this text
   bool parameters = false;  ///< print every member's parameters (posterior means), not only material's
   bool rounds = false;      ///< print every joint run of the combined search (why a case went the way it did)
+  int screen_live = 0;      ///< live points of the combined search's screening runs (0: the default)
 };
 
 template <class Cases>
@@ -73,6 +75,7 @@ std::string explanation_text(const diagnosis::Verdict& v, const Options& o) {
 diagnosis::Diagnosis run(const ValidationCase& c, const Options& o) {
   auto request = case_request(c, o.live);
   request.settings.threads = o.threads;
+  if (o.screen_live > 0) request.settings.screen_live = o.screen_live;
   return diagnosis::run_diagnosis(request);
 }
 
@@ -257,6 +260,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--from") && i + 1 < argc) o.from = static_cast<std::size_t>(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--stride") && i + 1 < argc) o.stride = static_cast<std::size_t>(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) o.only = argv[++i];
+    else if (!std::strcmp(argv[i], "--screen-live") && i + 1 < argc) o.screen_live = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--parameters")) o.parameters = true;
     else if (!std::strcmp(argv[i], "--rounds")) o.rounds = true;
     else o.set = argv[i];
