@@ -9,17 +9,19 @@
 ///   combined  a microphone spacing error (1 mm) and an edge gap (0.5 mm wide, 30 mm deep): the combined
 ///             search runs a round of every remaining effect jointly with the first (the two-effect case);
 ///   triple    the same two and a frame resonance (f0 800 Hz, q 8, y_peak 0.1): three members, with the
-///             swap and backward steps of the combined search (the three-effect case).
-/// Targets (docs/diagnosis.md, "Speed"): single ≤ 3 s, two effects ≤ 10 s, three ≤ 20 s of wall time on 2
-/// cores; printed, not asserted (a shared machine's wall time is no test).
+///             swap and backward steps of the combined search (the three-effect case);
+///   four      the same three and a microphone mismatch (gain 3 %, phase 1°): four members (the
+///             four-effect case).
+/// Targets (docs/diagnosis.md, "Speed"): single ≤ 3 s, two effects ≤ 10 s, three ≤ 20 s, four ≤ 40 s of wall
+/// time on 2 cores; printed, not asserted (a shared machine's wall time is no test).
 /// Prints per-candidate method, likelihood calls, seconds and Bayes factor, the joint candidates of each
 /// round of the combined search, and the wall time of each configuration:
 ///   baseline   every candidate with parameters sampled, 1 thread, no early stop (the former method;
 ///              single case only, skipped with --no-baseline);
 ///   1 thread   quadrature for 0-1 parameters, early stop;
 ///   N threads  the same on 2 threads and on N (results identical; checked here).
-/// Usage: bench_diagnose [--points N] [--threads N] [--case single|combined|triple|both|all] [--no-baseline] [--once]
-///   (both: single and combined, the default; all: the three cases)
+/// Usage: bench_diagnose [--points N] [--threads N] [--case single|combined|triple|four|both|all] [--no-baseline] [--once]
+///   (both: single and combined, the default; all: the four cases)
 ///   (--once: only the run on --threads threads, with its per-candidate table: CPU figures on a busy machine)
 #include "diagnosis/diagnosis.hpp"
 #include "diagnosis/diagnosis_record.hpp"
@@ -175,6 +177,12 @@ int main(int argc, char** argv) {
     fmt::print("\n# triple: a microphone spacing error, an edge gap and a frame resonance\n");
     const auto request = bench_case(points, {"mic_spacing:delta_m=1mm", "edge_gap:width_m=0.5mm,depth_m=30mm",
                                              "frame_resonance:f0_hz=800,q=8,y_peak=0.1"});
+    identical = bench_new(request, threads, nullptr, once) && identical;
+  }
+  if (which == "four" || which == "all") {
+    fmt::print("\n# four: a microphone spacing error, an edge gap, a frame resonance and a microphone mismatch\n");
+    const auto request = bench_case(points, {"mic_spacing:delta_m=1mm", "mic_mismatch:gain=0.03,phase_deg=1",
+                                             "edge_gap:width_m=0.5mm,depth_m=30mm", "frame_resonance:f0_hz=800,q=8,y_peak=0.1"});
     identical = bench_new(request, threads, nullptr, once) && identical;
   }
   return identical ? 0 : 1;

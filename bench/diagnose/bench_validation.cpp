@@ -9,13 +9,16 @@
 ///   out of vocabulary, among the cases no single effect halves (best single shrink < 2): unexplained
 ///   (also among those the exact model halves, i.e. whose gap is more than noise; oov-gaps prints the
 ///   exact model's shrink of each case without diagnosing).
-///   three effects, catalogue parameter + effect, single effects with a mimic: named exactly (the
-///   explanation is the case's effects and nothing else, residual white; explanation_cases.hpp).
-/// Usage: bench_validation [two|material|oov|oov-gaps|three|catalogue-effect|mimic|all] [--live N] [--threads N] [--stride K]
-///   [--from I] [--only TEXT] [--parameters] [--rounds]
+///   three effects, catalogue parameter + effect, single effects with a mimic, a mimic beside its partner
+///   and four effects (the last two composed by another route, ValidationCase::other_route): named
+///   exactly (the explanation is the case's effects and nothing else, residual white;
+///   explanation_cases.hpp), and without a passenger (no member outside the case's effects).
+/// Usage: bench_validation [two|material|oov|oov-gaps|three|catalogue-effect|mimic|partner|four|all] [--live N] [--threads N] [--stride K]
+///   [--from I] [--only TEXT] [--parameters] [--rounds] [--screen-live N]
 ///   (default all, 60 live points, all cores, every case; --stride K runs every K-th case of each set,
 ///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT,
-///   --parameters prints every member's parameters, --rounds every joint run of the combined search).
+///   --parameters prints every member's parameters, --rounds every joint run of the combined search,
+///   --screen-live N the live points of the combined search's screening runs).
 /// A case costs 0.1-62 s of CPU (docs/diagnosis.md: most of it in cases that run every round, out of
 /// vocabulary), the 85 cases together well under an hour of CPU; the compact CTest runs a fixed-seed subset.
 #include "explanation_cases.hpp"
@@ -44,6 +47,7 @@ struct Options {
   std::string only;        ///< run only the cases whose label contains this text
   bool parameters = false;  ///< print every member's parameters (posterior means), not only material's
   bool rounds = false;      ///< print every joint run of the combined search (why a case went the way it did)
+  int screen_live = 0;      ///< live points of the combined search's screening runs (0: the default)
 };
 
 template <class Cases>
@@ -71,6 +75,7 @@ std::string explanation_text(const diagnosis::Verdict& v, const Options& o) {
 diagnosis::Diagnosis run(const ValidationCase& c, const Options& o) {
   auto request = case_request(c, o.live);
   request.settings.threads = o.threads;
+  if (o.screen_live > 0) request.settings.screen_live = o.screen_live;
   return diagnosis::run_diagnosis(request);
 }
 
@@ -143,7 +148,7 @@ bool all_named(const diagnosis::Verdict& v, const ValidationCase& c) {
 /// exactly, the rate with every effect named (extra members allowed), the members dropped by the
 /// backward step, and the largest wall and CPU time of a case.
 void named_sweep(const char* set, const std::vector<ValidationCase>& cases, const Options& o) {
-  int exact = 0, all = 0, n = 0, dropped = 0;
+  int exact = 0, all = 0, n = 0, dropped = 0, clean = 0;
   double wall_max = 0.0, cpu_max = 0.0;
   std::map<std::string, int> appearances;
   for (const auto& c : cases) {
@@ -153,6 +158,7 @@ void named_sweep(const char* set, const std::vector<ValidationCase>& cases, cons
     ++n;
     exact += ok;
     all += all_named(d.verdict, c);
+    clean += no_passenger(d.verdict, c);
     dropped += !d.verdict.dropped.empty();
     wall_max = std::max(wall_max, t.wall);
     cpu_max = std::max(cpu_max, t.cpu);
@@ -163,13 +169,14 @@ void named_sweep(const char* set, const std::vector<ValidationCase>& cases, cons
   }
   std::string counts;
   for (const auto& [e, k] : appearances) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", e, k);
-  fmt::print("{}: named exactly {}/{} = {:.0f} %; every effect named (extras allowed) {}/{}; cases with a dropped member {}; "
-             "slowest case {:.1f} s wall, {:.1f} s CPU\n  effects appearing: {}\n",
-             set, exact, n, n ? 100.0 * exact / n : 0.0, all, n, dropped, wall_max, cpu_max, counts);
+  fmt::print("{}: named exactly {}/{} = {:.0f} %; every effect named (extras allowed) {}/{}; no passenger {}/{} = {:.0f} %; "
+             "cases with a dropped member {}; slowest case {:.1f} s wall, {:.1f} s CPU\n  effects appearing: {}\n",
+             set, exact, n, n ? 100.0 * exact / n : 0.0, all, n, clean, n, n ? 100.0 * clean / n : 0.0, dropped, wall_max,
+             cpu_max, counts);
 }
 
 void two_effects(const Options& o) {
-  int both = 0, shrink_ok = 0, exactly = 0, n = 0;
+  int both = 0, shrink_ok = 0, exactly = 0, clean = 0, n = 0;
   for (const auto& c : every(two_effect_cases(), o)) {
     diagnosis::Diagnosis d;
     const Timing s = timed(c, o, d);
@@ -181,14 +188,15 @@ void two_effects(const Options& o) {
     shrink_ok += named && half;
     line(c, d, named ? (half ? "ok" : "ok~") : "MISS", s, o);
     exactly += named_exactly(d.verdict, c);
+    clean += no_passenger(d.verdict, c);
     fmt::print("     exact model shrink {:.2f}; named exactly: {}\n", exact, named_exactly(d.verdict, c) ? "yes" : "no");
     details(d, o);
     if (!named) leading_singles(d);
   }
   fmt::print("two effects: both named {}/{} = {:.0f} %; both named with shrink >= half the exact model's {}/{} = {:.0f} %; "
-             "named exactly {}/{} = {:.0f} %\n",
+             "named exactly {}/{} = {:.0f} %; no passenger {}/{} = {:.0f} %\n",
              both, n, n ? 100.0 * both / n : 0.0, shrink_ok, n, n ? 100.0 * shrink_ok / n : 0.0, exactly, n,
-             n ? 100.0 * exactly / n : 0.0);
+             n ? 100.0 * exactly / n : 0.0, clean, n, n ? 100.0 * clean / n : 0.0);
 }
 
 void material(const Options& o) {
@@ -252,6 +260,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--from") && i + 1 < argc) o.from = static_cast<std::size_t>(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--stride") && i + 1 < argc) o.stride = static_cast<std::size_t>(std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) o.only = argv[++i];
+    else if (!std::strcmp(argv[i], "--screen-live") && i + 1 < argc) o.screen_live = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--parameters")) o.parameters = true;
     else if (!std::strcmp(argv[i], "--rounds")) o.rounds = true;
     else o.set = argv[i];
@@ -264,5 +273,8 @@ int main(int argc, char** argv) {
   if (o.set == "catalogue-effect" || o.set == "all")
     named_sweep("catalogue parameter + effect", every(catalogue_effect_cases(), o), o);
   if (o.set == "mimic" || o.set == "all") named_sweep("single effects with a mimic", every(mimic_cases(), o), o);
+  if (o.set == "partner" || o.set == "all")
+    named_sweep("mimic beside its partner (other route)", every(partner_cases(), o), o);
+  if (o.set == "four" || o.set == "all") named_sweep("four effects (other route)", every(four_effect_cases(), o), o);
   return 0;
 }

@@ -94,13 +94,16 @@ void print_summary(const Diagnosis& d, const std::string& path) {
   for (const auto& m : v.dropped)
     dropped += fmt::format("{}{}{} ({:.1f} dB)", dropped.empty() ? "" : ", ", m.effect,
                            m.parameter.empty() ? "" : " " + m.parameter, m.bayes_factor_deciban);
+  std::string at_bound;
+  for (const auto& h : v.at_prior_bound) at_bound += "\n  at its prior's bound: " + prior_bound_text(h);
   const std::string main_cause = main_cause_text(v);
-  fmt::print("verdict: {}{} (shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}{}{}{}\nwrote {}\n", v.effect,
+  fmt::print("verdict: {}{} (shrink {:.2f}x = {:.0f} % of the squared gap, band {:.0f} Hz){}{}{}{}{}\nwrote {}\n", v.effect,
              main_cause.empty() ? "" : " - " + main_cause, v.shrink, 100.0 * v.explained, v.band.f_center,
              v.effect == "none" || !main_cause.empty() ? "" : (v.white_after ? ", residual white after" : ", structure left"),
              explanation.empty() ? "" : (v.effect == "unexplained" ? "; best attempt:" : "; explanation:") + explanation,
              shares.empty() ? "" : "\n  shares of the squared gap: " + shares,
-             dropped.empty() ? "" : "\n  dropped (within the decision margin, fewer parameters kept): " + dropped, path);
+             dropped.empty() ? "" : "\n  dropped (within the decision margin, fewer parameters kept): " + dropped, at_bound,
+             path);
 }
 
 void print_passive_summary(const PassiveDiagnosis& d, const std::string& path) {

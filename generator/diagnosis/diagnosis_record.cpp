@@ -92,6 +92,11 @@ VerdictRecord verdict_record(const Verdict& v) {
                          fmt::format("the explanation with it is less than {:g} deciban better than the one without it: "
                                      "within the decision margin, the one with fewer parameters is kept",
                                      kDecisiveDeciban)});
+  if (!v.at_prior_bound.empty()) {
+    r.at_prior_bound.emplace();
+    for (const auto& h : v.at_prior_bound)
+      r.at_prior_bound->push_back({h.effect, h.parameter, h.upper ? "upper" : "lower", h.bound, h.mean, h.fix});
+  }
   r.shrink = v.shrink;
   r.explained_fraction = v.explained;
   r.band = edges(v.band);

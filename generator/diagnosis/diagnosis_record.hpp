@@ -104,12 +104,23 @@ struct DroppedMemberRecord {
   std::string reason;
 };
 
+/// A member's parameter whose posterior presses on a bound of its prior (prior_bound.hpp).
+struct PriorBoundRecord {
+  std::string effect, parameter;
+  std::string bound;  ///< "lower" or "upper"
+  double bound_value = 0.0, mean = 0.0;
+  std::string fix;
+};
+
 struct VerdictRecord {
   std::string effect = "none";  ///< the primary effect, none or unexplained
   std::vector<ExplanationMemberRecord> explanation;
   std::vector<ShareRecord> shares;        ///< largest first; empty in /1 and /2 files
   std::optional<ShareRecord> main_cause;  ///< the largest share when it is at least one half
   std::vector<DroppedMemberRecord> dropped;
+  /// Present only when a parameter presses on its prior's bound (a key added within schema /3: older
+  /// files and diagnoses without such a parameter lack it).
+  std::optional<std::vector<PriorBoundRecord>> at_prior_bound;
   double shrink = 1.0, explained_fraction = 0.0;  ///< of the whole explanation
   BandEdges band;
   double log_bayes_factor_deciban = 0.0;

@@ -191,7 +191,7 @@ void add_chain_effects(std::vector<EffectCandidate>& out, const ContextPtr& c) {
                                d.spacing_error_m = t[0];
                                return d;
                              }));
-  out.push_back(chain_effect("mic_mismatch", {{"gain", Shape::uniform, -0.1, 0.1}, {"phase_deg", Shape::uniform, -5, 5}},
+  out.push_back(chain_effect("mic_mismatch", {{"gain", Shape::uniform, -0.25, 0.25}, {"phase_deg", Shape::uniform, -5, 5}},
                              c, [](const double* t) {
                                ChainDeviation d;
                                d.mic_ratio = (1.0 + t[0]) * std::polar(1.0, t[1] * static_cast<double>(EIGEN_PI) / 180.0);

@@ -58,19 +58,29 @@ struct Search {
   /// single-effect best point. Two effects that correct the gap in the same way are what the data tell
   /// apart least (docs/diagnosis.md, "Mimic swap").
   std::vector<std::size_t> mimics(const std::vector<ExplanationStep>& steps, std::size_t k, std::size_t count) const {
-    const auto dot = [](const Eigen::ArrayXcd& a, const Eigen::ArrayXcd& b) { return (a.conjugate() * b).real().sum(); };
     std::vector<std::pair<double, std::size_t>> alike;
-    const double norm_k = std::sqrt(dot(corrections[k], corrections[k]));
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (!offered(steps, i)) continue;
-      const double norm_i = std::sqrt(dot(corrections[i], corrections[i]));
-      if (!(norm_i > 0.0 && norm_k > 0.0)) continue;
-      alike.emplace_back(std::abs(dot(corrections[i], corrections[k])) / (norm_i * norm_k), i);
-    }
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      if (offered(steps, i) && likeness(i, k) > 0.0) alike.emplace_back(likeness(i, k), i);
     std::stable_sort(alike.begin(), alike.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     std::vector<std::size_t> out;
     for (std::size_t j = 0; j < std::min(count, alike.size()); ++j) out.push_back(alike[j].second);
     return out;
+  }
+
+  /// |cos| between the single-effect corrections ŷ − y_sim of candidates a and b (real inner product over
+  /// the points, each at its single-effect best point); 0 when either has none.
+  double likeness(std::size_t a, std::size_t b) const {
+    const auto dot = [](const Eigen::ArrayXcd& x, const Eigen::ArrayXcd& y) { return (x.conjugate() * y).real().sum(); };
+    const double norm = std::sqrt(dot(corrections[a], corrections[a]) * dot(corrections[b], corrections[b]));
+    return norm > 0.0 ? std::abs(dot(corrections[a], corrections[b])) / norm : 0.0;
+  }
+
+  /// Whether member j of `members` rides beside a partner: another member corrects the gap alike
+  /// (likeness ≥ kPartnerLikeness), so the explanation without j needs that partner to take over its part.
+  bool beside_partner(const std::vector<std::size_t>& members, std::size_t j) const {
+    for (std::size_t k = 0; k < members.size(); ++k)
+      if (k != j && likeness(members[j], members[k]) >= kPartnerLikeness) return true;
+    return false;
   }
 
   /// `count` fresh seed streams, the first returned: every batch takes the next block.
@@ -141,8 +151,12 @@ struct Search {
   /// its screened estimate, which decides the member decisive all the same. The members left sample from
   /// the whole explanation's posterior with a single effect's uniform share: they may take over the work of
   /// the member taken out.
+  /// A model flagged in `in_full` (the explanation without a member that rides beside its partner) is run
+  /// in full whatever its screening run found, on the next block of streams after the screening's: its
+  /// partner must move far from where the whole explanation put it to take over the member's part, which a
+  /// screening run of 25 live points can miss.
   std::vector<EffectResult> evaluate_reduced(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
-                                             double log_z_whole) {
+                                             double log_z_whole, const std::vector<bool>& in_full) {
     if (models.empty()) return {};
     const std::vector<EffectCandidate> tried = combined(models, now, kReferenceShareSingle);
     const double reference = log_z_whole - 2.0 * kDecisiveDeciban * std::log(10.0) / 10.0;
@@ -150,8 +164,26 @@ struct Search {
     // has found a peak that lies far from where the whole explanation put the remaining members.
     IdentificationSettings screened = settings;
     screened.early_stop_deciban = 0.0;
-    return with_gaps(models, tried,
-                     evaluate_contenders(tried, likelihood, screened, reference, take_streams(models.size()), progress));
+    std::vector<EffectResult> results =
+        evaluate_contenders(tried, likelihood, screened, reference, take_streams(models.size()), progress);
+    std::vector<std::size_t> again;
+    std::vector<EffectCandidate> full;
+    for (std::size_t k = 0; k < models.size(); ++k)
+      if (in_full[k] && results[k].method == "screened") {
+        again.push_back(k);
+        full.push_back(tried[k]);
+      }
+    if (!again.empty()) {
+      std::vector<EffectResult> runs =
+          evaluate_candidates(full, likelihood, screened, reference, take_streams(again.size()), progress);
+      for (std::size_t k = 0; k < again.size(); ++k) {
+        runs[k].seconds += results[again[k]].seconds;
+        runs[k].cpu_seconds += results[again[k]].cpu_seconds;
+        runs[k].calls += results[again[k]].calls;
+        results[again[k]] = std::move(runs[k]);
+      }
+    }
+    return with_gaps(models, tried, std::move(results));
   }
 
   /// The swaps of a swap pass against the explanation `now`: the question of an addition round (which is
@@ -263,6 +295,7 @@ void backward_step(Search& search, std::size_t round, EffectResult prefix, Expla
     std::vector<EffectResult> reduced(members.size());
     std::vector<std::vector<std::size_t>> to_evaluate;
     std::vector<std::size_t> evaluated_at;
+    std::vector<bool> in_full;
     for (std::size_t j = 0; j < members.size(); ++j) {
       const std::vector<std::size_t> rest = without(members, j);
       if (rest.size() == 1) {
@@ -272,9 +305,10 @@ void backward_step(Search& search, std::size_t round, EffectResult prefix, Expla
       } else {
         to_evaluate.push_back(rest);
         evaluated_at.push_back(j);
+        in_full.push_back(search.beside_partner(members, j));
       }
     }
-    const std::vector<EffectResult> evaluated = search.evaluate_reduced(to_evaluate, out, out.joint.log_z);
+    const std::vector<EffectResult> evaluated = search.evaluate_reduced(to_evaluate, out, out.joint.log_z, in_full);
     if (!evaluated.empty()) out.rounds.push_back(evaluated);
     for (std::size_t k = 0; k < evaluated.size(); ++k) reduced[evaluated_at[k]] = evaluated[k];
     const std::size_t weakest = best_of(reduced);  // the member whose removal costs least evidence

@@ -26,7 +26,10 @@
 ///   without it by the rule of an addition, BF(E : E − m) ≥ 20 dB. The weakest member that is not
 ///   decisive is dropped (the two explanations are within the decision margin: the one with fewer
 ///   parameters is kept), and the step repeats. A dropped member is not offered again, so the search
-///   cannot cycle; it ends at the latest after kMaxExplanationRounds rounds.
+///   cannot cycle; it ends at the latest after kMaxExplanationRounds rounds. The explanations without one
+///   member are screened; one without a member that rides beside a partner (a mimic: their single-effect
+///   corrections alike, kPartnerLikeness) is run in full, white residual or not: the partner must move
+///   far to take over the member's part, which a screening run can miss.
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
 /// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
@@ -55,9 +58,12 @@
 namespace admitgen::diagnosis {
 
 /// Members at most (bounds the search's cost; a gap that needs more is reported as it stands).
-inline constexpr std::size_t kMaxExplanationEffects = 3;
+inline constexpr std::size_t kMaxExplanationEffects = 4;
 /// Mimics tried per earlier member in the mimic swap after a white residual (explanation.cpp mimic_swap).
 inline constexpr std::size_t kMimicsPerMember = 1;
+/// A member rides beside a partner when their single-effect corrections ŷ − y_sim have |cos| at least this
+/// (explanation.cpp Search::beside_partner): the backward step then runs the explanation without it in full.
+inline constexpr double kPartnerLikeness = 0.5;
 /// Addition rounds at most: each round adds one member, the backward step may take members out again.
 inline constexpr std::size_t kMaxExplanationRounds = 2 * kMaxExplanationEffects;
 /// A member whose share of the squared gap is at least this, and which alone explains at least this

@@ -22,8 +22,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDecibanPerNat = 10.0 / 2.302585092994046;
 
-/// Coarse cells per parameter and the refinement of the 3^d cells around the best (docs/diagnosis.md,
-/// "Physics as the reference"): 21 and 6 for one parameter, 9 and 2 for two.
+/// Coarse cells per parameter and the refinement of the 3^d cells around the best, done twice
+/// (docs/diagnosis.md, "Physics as the reference"): 21 and 6 for one parameter, 9 and 2 for two.
 int coarse_cells(std::size_t dims) { return dims == 1 ? 21 : 9; }
 int refinement(std::size_t dims) { return dims == 1 ? 6 : 2; }
 
@@ -172,20 +172,22 @@ PassiveDiagnosis diagnose_against_passivity(const Measurement& real, const TubeS
       const double h = 1.0 / n;
       cells = grid(std::vector<double>(dims, 0.0), h, n);
       evaluate(cells);
-      const Cell best = *std::max_element(cells.begin(), cells.end(),
-                                          [](const Cell& a, const Cell& b) { return a.log_l < b.log_l; });
-      // The 3^d coarse cells around the best are replaced by (3r)^d fine ones.
-      const auto near = [&](const Cell& c) {
-        for (std::size_t k = 0; k < dims; ++k)
-          if (std::abs(c.u[k] - best.u[k]) > 1.5 * h) return false;
-        return true;
-      };
-      cells.erase(std::remove_if(cells.begin(), cells.end(), near), cells.end());
-      std::vector<double> lo(dims);
-      for (std::size_t k = 0; k < dims; ++k) lo[k] = best.u[k] - 1.5 * h;
-      std::vector<Cell> fine = grid(lo, h / r, 3 * r);
-      evaluate(fine);
-      cells.insert(cells.end(), fine.begin(), fine.end());
+      // Twice: the 3^d cells of width w around the best are replaced by (3r)^d cells of width w/r.
+      for (double w = h; w > h / (r * r) * 1.5; w /= r) {
+        const Cell best = *std::max_element(cells.begin(), cells.end(),
+                                            [](const Cell& a, const Cell& b) { return a.log_l < b.log_l; });
+        const auto near = [&](const Cell& c) {
+          for (std::size_t k = 0; k < dims; ++k)
+            if (std::abs(c.u[k] - best.u[k]) > 1.5 * w) return false;
+          return true;
+        };
+        cells.erase(std::remove_if(cells.begin(), cells.end(), near), cells.end());
+        std::vector<double> lo(dims);
+        for (std::size_t k = 0; k < dims; ++k) lo[k] = best.u[k] - 1.5 * w;
+        std::vector<Cell> fine = grid(lo, w / r, 3 * r);
+        evaluate(fine);
+        cells.insert(cells.end(), fine.begin(), fine.end());
+      }
     }
     double max_l = -std::numeric_limits<double>::infinity();
     std::size_t arg = 0;
@@ -210,7 +212,7 @@ PassiveDiagnosis diagnose_against_passivity(const Measurement& real, const TubeS
         if (!hi_set && cum >= 0.975) hi = t, hi_set = true;
       }
       // A posterior narrower than a fine cell is reported as that cell: the grid's resolution.
-      const double half = 0.5 / (coarse_cells(dims) * refinement(dims));
+      const double half = 0.5 / (coarse_cells(dims) * refinement(dims) * refinement(dims));
       lo = std::min(lo, priors[p].transform(std::max(0.0, cells[arg].u[p] - half)));
       hi = std::max(hi, priors[p].transform(std::min(1.0, cells[arg].u[p] + half)));
       e.mean.push_back(mean);

@@ -46,6 +46,7 @@ Verdict decide(const Gap& gap, const Identification& id, const Explanation& expl
     const EffectCandidate& c = candidates[d.candidate];
     v.dropped.push_back({c.name, c.name == "material" ? c.priors.front().name : std::string(), d.bayes_factor_deciban});
   }
+  v.at_prior_bound = prior_bound_hits(explanation, candidates);
   const EffectResult& joint = explanation.joint;
   v.shrink = joint.shrink;
   v.explained = joint.explained;

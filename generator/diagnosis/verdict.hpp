@@ -26,6 +26,8 @@
 /// gap (explanation.hpp member_shares), largest first; the member whose share is at least kMainCauseShare,
 /// and which alone explains at least that fraction of the squared gap, is the main cause, named also when the verdict is unexplained ("main cause X (share), structure
 /// left"): most of the gap is that effect even though something outside the vocabulary is left.
+/// A member's parameter whose posterior presses on a bound of its prior is listed with the fix
+/// (prior_bound.hpp).
 /// Members the backward step of the search dropped are listed with their Bayes factor (the explanation
 /// with them was within the decision margin of the one without, which has fewer parameters).
 /// The runner-up's margin is reported as well: two effects within a few deciban of each other are
@@ -36,6 +38,7 @@
 #include "diagnosis/effect_identification.hpp"
 #include "diagnosis/explanation.hpp"
 #include "diagnosis/gap_metrics.hpp"
+#include "diagnosis/prior_bound.hpp"
 
 #include <optional>
 #include <string>
@@ -71,6 +74,7 @@ struct Verdict {
   std::vector<VerdictShare> shares;  ///< one per member, largest share first (ties: explanation order)
   std::optional<VerdictShare> main_cause;  ///< the first of shares when it and its member alone reach kMainCauseShare
   std::vector<VerdictDropped> dropped;
+  std::vector<PriorBoundHit> at_prior_bound;  ///< members' parameters held by a prior bound (prior_bound.hpp)
   double bayes_factor_deciban = 0.0;  ///< of e* (also when the verdict is none)
   double margin_deciban = 0.0;        ///< BF(e*) − BF(runner-up); +inf when there is no runner-up
   double shrink = 1.0;      ///< of the whole explanation

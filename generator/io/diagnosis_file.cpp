@@ -154,6 +154,16 @@ void fields(V& v, diagnosis::DroppedMemberRecord& r) {
 }
 
 template <class V>
+void fields(V& v, diagnosis::PriorBoundRecord& r) {
+  v("effect", r.effect);
+  v("parameter", r.parameter);
+  v("bound", r.bound);
+  v("bound_value", r.bound_value);
+  v("mean", r.mean);
+  v("fix", r.fix);
+}
+
+template <class V>
 void fields(V& v, diagnosis::VerdictRecord& r) {
   v("effect", r.effect);
   v.since(2, [&r](auto& w) { w("explanation", r.explanation); });
@@ -161,6 +171,7 @@ void fields(V& v, diagnosis::VerdictRecord& r) {
     w("shares", r.shares);
     w("main_cause", r.main_cause, kNullable);
     w("dropped", r.dropped);
+    w("at_prior_bound", r.at_prior_bound);
   });
   v("shrink", r.shrink);
   v("explained_fraction", r.explained_fraction);

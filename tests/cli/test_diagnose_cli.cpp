@@ -166,4 +166,23 @@ TEST_CASE("diagnose CLI: a verdict of none exits 0") {
   CHECK(r.exit_code == 0);
 }
 
+TEST_CASE("diagnose CLI: a parameter held by a prior bound is stated on the terminal and in diagnosis.json") {
+  // A microphone calibration 40 % off, beyond the gain prior [-0.25, 0.25] (docs/diagnosis.md, "A parameter
+  // at its prior's bound"): the gain sits at 0.25, and the summary and the file say so with the fix.
+  const std::string dir = scratch_dir("diagnose_cli_bound");
+  REQUIRE(run_admitgen("synth --material " + kMaterial + " --effect mic_mismatch:gain=0.4,phase_deg=2 --noise 0.003 "
+                       "--band 200:1600 --points 60 --seed 6 -q --out " + dir + "/real.csv" + kTube)
+              .exit_code == 0);
+  const auto r = run_admitgen("diagnose --real " + dir + "/real.csv --sim " + kMaterial + kTube + " --live 40 --out " + dir + "/d");
+  CHECK(r.exit_code == 1);
+  CHECK(r.output.find("at its prior's bound: mic_mismatch gain = ") != std::string::npos);
+  CHECK(r.output.find("calibrate the microphones") != std::string::npos);
+  const auto j = nlohmann::json::parse(read_text(dir + "/d/diagnosis.json"));
+  REQUIRE(j["verdict"].contains("at_prior_bound"));
+  CHECK(j["verdict"]["at_prior_bound"][0]["effect"] == "mic_mismatch");
+  CHECK(j["verdict"]["at_prior_bound"][0]["parameter"] == "gain");
+  CHECK(j["verdict"]["at_prior_bound"][0]["bound"] == "upper");
+  CHECK(j["verdict"]["at_prior_bound"][0]["bound_value"] == 0.25);
+}
+
 }  // namespace admitgen::test

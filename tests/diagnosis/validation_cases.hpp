@@ -20,6 +20,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <complex>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -53,6 +55,12 @@ struct ValidationCase {
   std::string truth_second;
   std::string third;        ///< a third effect (three-effect cases), its documented name in truth_third
   std::string truth_third;
+  std::string fourth;       ///< a fourth effect (four-effect cases), its documented name in truth_fourth
+  std::string truth_fourth;
+  /// The "real" data composed by another route than the one diagnose composes its candidates by
+  /// (other_route_y: the sample effects in the reverse order, the chain from the pressure field;
+  /// docs/diagnosis.md, "Four effects and mimics beside their partners").
+  bool other_route = false;
   std::string real_spec;    ///< the real sample's SPEC when it differs from the simulated one ("" = the same)
   std::string parameter;    ///< catalogue-parameter cases: the SPEC parameter that is off ("1.sigma")
   double ratio = 1.0;       ///< and by how much
@@ -74,16 +82,93 @@ inline TubeSetup case_tube(const ValidationCase& c) { return {c.tube_diameter_m,
 inline SynthesisRequest truth_request(const ValidationCase& c, bool noise) {
   SynthesisRequest request{parse_material_spec(c.real_spec.empty() ? c.material.spec : c.real_spec), {},
                            log_spaced_frequencies(100.0, 2000.0, 120), noise ? kNoise : 0.0, c.seed, case_tube(c)};
-  for (const auto& text : {c.effect, c.second, c.third})
+  for (const auto& text : {c.effect, c.second, c.third, c.fourth})
     if (!text.empty() && (noise || effect_name(parse_effect(text)) != "heteroscedastic_noise"))
       request.effects.push_back(parse_effect(text));  // heteroscedastic_noise shapes the noise only
   return request;
 }
 
+/// The chain of an other_route case, written out from the pressure field in the tube instead of through
+/// physics/two_microphone (and in another order: the microphones placed first, then the air, the losses
+/// and the mismatch): x from the true sample face, p(x) = e^{jk_t x} + R_t e^{−jk_t x} with k_t the true
+/// wavenumber (air at T + ΔT; with tube losses k_t = ω/c + (1 − j)·0.0194·√f/(c·d), docs/cli.md) and
+/// R_t = (1 − y_t)/(1 + y_t), y_t = y·ρ0c0(T + ΔT)/ρ0c0(T); the far microphone at x1 + δ_ref, the near one
+/// at x1 + δ_ref − s − δ_s, its pressure scaled by (1 + gain)·e^{jφ}; processed as ISO 10534-2 with the
+/// nominal x1, s and k = ω/c(T): R = (H12 − e^{−jks})/(e^{jks} − H12)·e^{2jkx1}, y = (1 − R)/(1 + R).
+/// The same physics as the one chain of the search (docs/physics.md §5), by another computation.
+inline Eigen::ArrayXcd chain_by_pressure_field(const Eigen::ArrayXcd& y, const Eigen::ArrayXd& f_hz, const TubeSetup& tube,
+                                               const std::vector<Effect>& chain) {
+  double ref = 0.0, spacing = 0.0, dk = 0.0;
+  bool losses = false;
+  std::complex<double> mismatch{1.0, 0.0};
+  for (const auto& e : chain) {
+    if (const auto* p = std::get_if<ReferencePlane>(&e)) ref = p->delta_m;
+    if (const auto* p = std::get_if<MicSpacing>(&e)) spacing = p->delta_m;
+    if (const auto* p = std::get_if<TemperatureOffset>(&e)) dk = p->delta_k;
+    if (std::holds_alternative<TubeLosses>(e)) losses = true;
+    if (const auto* p = std::get_if<MicMismatch>(&e))
+      mismatch = (1.0 + p->gain) * std::polar(1.0, p->phase_deg * static_cast<double>(EIGEN_PI) / 180.0);
+  }
+  const double x_far = *tube.mic1_distance_m + ref, x_near = x_far - *tube.spacing_m - spacing;
+  const Air nominal = Air::at_celsius(tube.temperature_c), air = Air::at_celsius(tube.temperature_c + dk);
+  const std::complex<double> j{0.0, 1.0};
+  Eigen::ArrayXcd out(y.size());
+  for (Eigen::Index i = 0; i < y.size(); ++i) {
+    const double omega = 2.0 * static_cast<double>(EIGEN_PI) * f_hz[i];
+    std::complex<double> kt = omega / air.c0;
+    if (losses) kt += (1.0 - j) * 0.0194 * std::sqrt(f_hz[i]) / (air.c0 * *tube.diameter_m);
+    const std::complex<double> yt = y[i] * (air.rho0 * air.c0) / (nominal.rho0 * nominal.c0);
+    const std::complex<double> rt = (1.0 - yt) / (1.0 + yt);
+    const auto p = [&](double x) { return std::exp(j * kt * x) + rt * std::exp(-j * kt * x); };
+    const std::complex<double> h12 = mismatch * p(x_near) / p(x_far);
+    const double k = omega / nominal.c0, s = *tube.spacing_m, x1 = *tube.mic1_distance_m;
+    const std::complex<double> r = (h12 - std::exp(-j * k * s)) / (std::exp(j * k * s) - h12) * std::exp(2.0 * j * k * x1);
+    out[i] = (1.0 - r) / (1.0 + r);
+  }
+  return out;
+}
+
+/// The clean "real" data of an other_route case, composed by another route than synthesize (and the
+/// search's combine_effects): the layered material with its air gap as a layer; the sample effects in the
+/// reverse order (fractional_order, frame_resonance, edge_gap: the slit's area share then also scales the
+/// resonance and the fractional terms, as if they acted on the sample alone, which the search's order
+/// represents with y_peak, c₊ and c₋ smaller by that share); the chain by chain_by_pressure_field.
+inline Eigen::ArrayXcd other_route_y(const SynthesisRequest& r) {
+  validate(r);
+  const Air air = Air::at_celsius(r.tube.temperature_c);
+  Material m = r.material;
+  std::vector<Effect> sample, chain;
+  for (const auto& e : r.effects) {
+    if (const auto* gap = std::get_if<AirGap>(&e)) std::get<LayeredAbsorber>(m).layers.push_back(AirLayer{gap->gap_m});
+    else if (std::holds_alternative<EdgeGap>(e) || std::holds_alternative<FrameResonance>(e) ||
+             std::holds_alternative<FractionalOrder>(e))
+      sample.push_back(e);
+    else if (!std::holds_alternative<HeteroscedasticNoise>(e) && !std::holds_alternative<NoEffect>(e))
+      chain.push_back(e);
+  }
+  std::sort(sample.begin(), sample.end(), [](const Effect& a, const Effect& b) { return a.index() > b.index(); });
+  Eigen::ArrayXcd y = surface_admittance(m, air, r.f_hz);
+  for (const auto& e : sample) {
+    if (const auto* g = std::get_if<EdgeGap>(&e)) y = apply_edge_gap(*g, *r.tube.diameter_m, air, r.f_hz, y);
+    if (const auto* f = std::get_if<FrameResonance>(&e)) y = apply_frame_resonance(*f, r.f_hz, y);
+    if (const auto* f = std::get_if<FractionalOrder>(&e)) y = apply_fractional_order(*f, r.f_hz, y);
+  }
+  return chain.empty() ? y : chain_by_pressure_field(y, r.f_hz, r.tube, chain);
+}
+
+/// The noise of a case's real data (heteroscedastic when the case holds heteroscedastic_noise), as
+/// synthesize draws it.
+inline Eigen::ArrayXd case_noise_std(const SynthesisRequest& r) {
+  for (const auto& e : r.effects)
+    if (const auto* h = std::get_if<HeteroscedasticNoise>(&e))
+      return heteroscedastic_std(kNoise, h->scale, Air::at_celsius(r.tube.temperature_c), *r.tube.spacing_m, r.f_hz);
+  return Eigen::ArrayXd::Constant(r.f_hz.size(), kNoise);
+}
+
 /// The real data without noise: the truth exactly (what an exact model of the case would predict).
 inline Eigen::ArrayXcd exact_y(const ValidationCase& c) {
   const SynthesisRequest r = truth_request(c, false);
-  const Eigen::ArrayXcd y = synthesize(r).y;
+  const Eigen::ArrayXcd y = c.other_route ? other_route_y(r) : synthesize(r).y;
   return c.distort ? c.distort(r.f_hz, y) : y;
 }
 
@@ -95,9 +180,9 @@ inline diagnosis::DiagnosisRequest case_request(const ValidationCase& c, int liv
   Measurement real;
   real.path = c.label;
   real.f_hz = request.f_hz;
-  if (c.distort) {  // the distortion acts on the clean data; the noise comes after it, as in synthesize
+  if (c.distort || c.other_route) {  // noise on the clean data, as in synthesize
     Rng rng(c.seed);
-    real.y = exact_y(c) + complex_gaussian_noise(Eigen::ArrayXd::Constant(request.f_hz.size(), kNoise), rng);
+    real.y = exact_y(c) + complex_gaussian_noise(case_noise_std(request), rng);
   } else {
     real.y = synthesize(request).y;
   }
