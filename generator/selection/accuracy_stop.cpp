@@ -70,6 +70,21 @@ std::string target_met_note(const Measurement& data, const FitSettings& settings
                      sel.order.name(), met);
 }
 
+namespace {
+
+/// A peak of the residual at most this many points wide is narrower than any pole pair the data can resolve: an
+/// artefact of the measurement more likely than a feature of the material.
+constexpr int kSpikePoints = 3;
+bool is_spike(const OrderAccuracy& a) { return a.peak_points <= kSpikePoints; }
+
+/// "a spike at 893.75 Hz 1 point(s) wide that no smooth model follows (…)".
+std::string spike(const OrderAccuracy& a) {
+  return fmt::format("a spike at {:.6g} Hz {} point(s) wide that no smooth model follows (a measurement artefact, or "
+                     "a resonance narrower than the frequency step)", a.peak_hz, a.peak_points);
+}
+
+}  // namespace
+
 std::string target_out_of_reach(const Measurement& data, const FitSettings& settings, const ModelResult& selected,
                                 const passivity::LazyPassiveBound& bound) {
   if (settings.target.max_band_delta_alpha <= 0.0 || !selected.accuracy || selected.accuracy->meets) return {};
@@ -94,14 +109,10 @@ std::string target_out_of_reach(const Measurement& data, const FitSettings& sett
                          "the measurement-chain effect, if any", p.relative_rms_residual,
                          p.best_sample_relative_rms_residual, b.max_band_delta_alpha, b.worst_band_hz, b.relative_rms);
   }
-  // A spike of at most kSpikePoints points is narrower than any pole pair the data can resolve: an artefact of the
-  // measurement more likely than a feature of the material. Out of reach when the order meets the target beside it.
-  constexpr int kSpikePoints = 3;
-  if (a.peak_points <= kSpikePoints && a.max_band_delta_alpha_beside_peak <= settings.target.max_band_delta_alpha)
-    return fmt::format("the data hold a spike at {:.6g} Hz {} point(s) wide that no smooth model follows (a "
-                       "measurement artefact, or a resonance narrower than the frequency step), and beside it {} "
-                       "meets the target (|Δα| ≤ {:.3f}): check the data there, or leave it out ({})",
-                       a.peak_hz, a.peak_points, selected.order.name(), a.max_band_delta_alpha_beside_peak,
+  // Out of reach when the order meets the target beside a spike.
+  if (is_spike(a) && a.max_band_delta_alpha_beside_peak <= settings.target.max_band_delta_alpha)
+    return fmt::format("the data hold {}, and beside it {} meets the target (|Δα| ≤ {:.3f}): check the data there, or "
+                       "leave it out ({})", spike(a), selected.order.name(), a.max_band_delta_alpha_beside_peak,
                        setting("band"));
   return {};
 }
@@ -120,12 +131,9 @@ std::string target_missed_warning(const Measurement& data, const FitSettings& se
       "{:.3f}, relative RMS {:.3g})", settings.target.describe(), sel.order.name(), a.worst_band_hz,
       a.max_band_delta_alpha, a.relative_rms);
   if (const std::string why = target_out_of_reach(data, settings, sel, bound); !why.empty()) return missed + ": " + why;
-  constexpr int kSpikePoints = 3;
-  if (a.peak_points <= kSpikePoints)
-    return fmt::format("{}, where the data hold a spike at {:.6g} Hz {} point(s) wide that no smooth model follows (a "
-                       "measurement artefact, or a resonance narrower than the frequency step), and beside it |Δα| "
-                       "reaches {:.3f}: check the data there, or leave it out ({})", missed, a.peak_hz,
-                       a.peak_points, a.max_band_delta_alpha_beside_peak, setting("band"));
+  if (is_spike(a))
+    return fmt::format("{}, where the data hold {}, and beside it |Δα| reaches {:.3f}: check the data there, or leave "
+                       "it out ({})", missed, spike(a), a.max_band_delta_alpha_beside_peak, setting("band"));
   return fmt::format("{}, where the data hold a feature at {:.6g} Hz about {:.3g} Hz wide that the model does not "
                      "follow (it needs a pole pair of its own: allow larger orders, {} or {}, or relax {})",
                      missed, a.peak_hz, a.peak_width_hz, setting("max_buffers"), setting("grid_growth"),
