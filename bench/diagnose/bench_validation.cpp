@@ -14,14 +14,16 @@
 ///   exactly (the explanation is the case's effects and nothing else, residual white;
 ///   explanation_cases.hpp), and without a passenger (no member outside the case's effects).
 /// Usage: bench_validation [two|material|oov|oov-gaps|three|catalogue-effect|mimic|partner|four|all] [--live N] [--threads N] [--stride K]
-///   [--from I] [--only TEXT] [--parameters] [--rounds] [--screen-live N]
+///   [--from I] [--only TEXT] [--parameters] [--rounds] [--screen-live N] [--truth]
 ///   (default all, 60 live points, all cores, every case; --stride K runs every K-th case of each set,
 ///   --from I skips the first I of those, --only TEXT keeps those whose label contains TEXT,
 ///   --parameters prints every member's parameters, --rounds every joint run of the combined search,
-///   --screen-live N the live points of the combined search's screening runs).
+///   --screen-live N the live points of the combined search's screening runs, --truth on a miss the case's own
+///   effects fitted jointly, their evidence beside the verdict's).
 /// A case costs 0.1-62 s of CPU (docs/diagnosis.md: most of it in cases that run every round, out of
 /// vocabulary), the 85 cases together well under an hour of CPU; the compact CTest runs a fixed-seed subset.
 #include "explanation_cases.hpp"
+#include "core/progress.hpp"
 #include "inference/evidence.hpp"
 
 #include <fmt/core.h>
@@ -48,6 +50,7 @@ struct Options {
   bool parameters = false;  ///< print every member's parameters (posterior means), not only material's
   bool rounds = false;      ///< print every joint run of the combined search (why a case went the way it did)
   int screen_live = 0;      ///< live points of the combined search's screening runs (0: the default)
+  bool truth = false;       ///< on a miss, also fit the case's own effects jointly and print their evidence
 };
 
 template <class Cases>
@@ -104,6 +107,41 @@ void details(const diagnosis::Diagnosis& d, const Options& o) {
   const std::string main_cause = diagnosis::main_cause_text(d.verdict);
   if (!main_cause.empty() && d.verdict.effect == "unexplained") fmt::print("     {}\n", main_cause);
   if (o.rounds) print_rounds(d);
+}
+
+/// The case's own effects fitted jointly (full nested sampling from the prior, the search's seed): their
+/// Bayes factor against no effect beside the verdict's, and whether they leave the residual white. A
+/// miss where the truth has the larger evidence is the search's; one where it has the smaller is the
+/// data's (the vocabulary explains them better another way).
+void truth_evidence(const ValidationCase& c, const diagnosis::Diagnosis& d, const Options& o) {
+  std::vector<const diagnosis::EffectCandidate*> members;
+  for (const auto& t : case_truths(c)) {
+    const std::string label = t == "material" ? "material " + c.parameter : t;
+    const auto it = std::find_if(d.candidates.begin(), d.candidates.end(),
+                                 [&](const diagnosis::EffectCandidate& e) { return e.label() == label; });
+    if (it == d.candidates.end()) {
+      fmt::print("     truth: {} is not a candidate\n", label);
+      return;
+    }
+    members.push_back(&*it);
+  }
+  const auto request = case_request(c, o.live);
+  Progress silent(false);
+  const std::vector<diagnosis::EffectCandidate> joint{diagnosis::combine_effects(members)};
+  std::vector<diagnosis::EffectResult> r = diagnosis::evaluate_candidates(
+      joint, diagnosis::EffectLikelihood(request.real.y), d.settings, -1e300, 1u << 20, silent);
+  diagnosis::fill_gap(r.front(), joint.front(), d.f_hz, request.real.y, d.gap);
+  fmt::print("     truth {}: {:.0f} dB, white {}; the verdict's explanation {:.0f} dB\n", joint.front().name,
+             deciban(r.front().log_z, d.identification.log_z_none), r.front().gap_after.whiteness.white ? "yes" : "no",
+             deciban(d.explanation.joint.log_z, d.identification.log_z_none));
+  auto few = d.settings;
+  few.sampler.live = few.screen_live;
+  for (int s = 0; s < 4; ++s) {
+    const auto q = diagnosis::evaluate_candidates(joint, diagnosis::EffectLikelihood(request.real.y), few, -1e300,
+                                                  (1u << 20) + 1 + static_cast<unsigned>(s), silent);
+    fmt::print("     truth, {} live points from the prior, stream {}: {:.0f} dB\n", few.sampler.live, s,
+               deciban(q.front().log_z, d.identification.log_z_none));
+  }
 }
 
 /// Wall time and the CPU time of all threads of the case (the wall time on an idle machine ≈ CPU / cores).
@@ -166,6 +204,7 @@ void named_sweep(const char* set, const std::vector<ValidationCase>& cases, cons
     line(c, d, ok ? "ok" : (all_named(d.verdict, c) ? "MISS+" : "MISS"), t, o);
     details(d, o);
     if (!ok) leading_singles(d);
+    if (!ok && o.truth) truth_evidence(c, d, o);
   }
   std::string counts;
   for (const auto& [e, k] : appearances) counts += fmt::format("{}{} {}", counts.empty() ? "" : ", ", e, k);
@@ -263,6 +302,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--screen-live") && i + 1 < argc) o.screen_live = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--parameters")) o.parameters = true;
     else if (!std::strcmp(argv[i], "--rounds")) o.rounds = true;
+    else if (!std::strcmp(argv[i], "--truth")) o.truth = true;
     else o.set = argv[i];
   }
   if (o.set == "two" || o.set == "all") two_effects(o);

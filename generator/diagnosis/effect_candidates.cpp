@@ -142,9 +142,10 @@ class SimulatedTable {
 
 namespace {
 
-EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
-                                 std::function<void(SimulatedChange&, const double*)> change) {
-  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c, {}, {}};
+EffectCandidate simulated_effect(std::string name, std::string check, std::vector<ParameterPrior> priors,
+                                 const ContextPtr& c, std::function<void(SimulatedChange&, const double*)> change) {
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::simulated, change, {}, {}, {}, c, {}, {},
+                    std::move(check)};
   e.predict = [c, change](const double* t) {
     SimulatedChange s = no_change(*c);
     change(s, t);
@@ -153,16 +154,18 @@ EffectCandidate simulated_effect(std::string name, std::vector<ParameterPrior> p
   return e;
 }
 
-EffectCandidate sample_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
+EffectCandidate sample_effect(std::string name, std::string check, std::vector<ParameterPrior> priors,
+                              const ContextPtr& c,
                               std::function<Eigen::ArrayXcd(const Eigen::ArrayXcd&, const double*)> apply) {
-  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c, {}, {}};
+  EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::sample, {}, apply, {}, {}, c, {}, {},
+                    std::move(check)};
   e.predict = [c, apply](const double* t) { return plain(apply(c->y_sim, t)); };
   return e;
 }
 
 /// A chain effect: the true chain deviates from the processed one (two_microphone.hpp).
-EffectCandidate chain_effect(std::string name, std::vector<ParameterPrior> priors, const ContextPtr& c,
-                             std::function<ChainDeviation(const double*)> deviation) {
+EffectCandidate chain_effect(std::string name, std::string check, std::vector<ParameterPrior> priors,
+                             const ContextPtr& c, std::function<ChainDeviation(const double*)> deviation) {
   EffectCandidate e{std::move(name), std::move(priors), {}, {}, EffectStage::chain, {}, {},
                     [deviation](ChainDeviation& d, const double* t) {
                       const ChainDeviation own = deviation(t);
@@ -172,7 +175,7 @@ EffectCandidate chain_effect(std::string name, std::vector<ParameterPrior> prior
                       d.mic_ratio *= own.mic_ratio;
                       d.reference_plane_m += own.reference_plane_m;
                     },
-                    {}, c, {}, {}};
+                    {}, c, {}, {}, std::move(check)};
   e.predict = [c, deviation](const double* t) { return plain(c->chain->measure(deviation(t))); };
   return e;
 }
@@ -185,24 +188,25 @@ bool regular_transfer(const EffectContext& c) {
 }
 
 void add_chain_effects(std::vector<EffectCandidate>& out, const ContextPtr& c) {
-  out.push_back(chain_effect("mic_spacing", {{"delta_m", Shape::uniform, -3 * kMm, 3 * kMm}}, c,
+  out.push_back(chain_effect("mic_spacing", "measure the microphone spacing", {{"delta_m", Shape::uniform, -3 * kMm, 3 * kMm}}, c,
                              [](const double* t) {
                                ChainDeviation d;
                                d.spacing_error_m = t[0];
                                return d;
                              }));
-  out.push_back(chain_effect("mic_mismatch", {{"gain", Shape::uniform, -0.25, 0.25}, {"phase_deg", Shape::uniform, -5, 5}},
+  out.push_back(chain_effect("mic_mismatch", "calibrate the microphones (swap them, ISO 10534-2)",
+                             {{"gain", Shape::uniform, -0.25, 0.25}, {"phase_deg", Shape::uniform, -5, 5}},
                              c, [](const double* t) {
                                ChainDeviation d;
                                d.mic_ratio = (1.0 + t[0]) * std::polar(1.0, t[1] * static_cast<double>(EIGEN_PI) / 180.0);
                                return d;
                              }));
-  out.push_back(chain_effect("temperature", {{"delta_k", Shape::uniform, -10, 10}}, c, [](const double* t) {
+  out.push_back(chain_effect("temperature", "measure the air temperature in the tube", {{"delta_k", Shape::uniform, -10, 10}}, c, [](const double* t) {
     ChainDeviation d;
     d.temperature_offset_k = t[0];
     return d;
   }));
-  out.push_back(chain_effect("tube_losses", {}, c, [](const double*) {
+  out.push_back(chain_effect("tube_losses", "check the tube diameter given", {}, c, [](const double*) {
     ChainDeviation d;
     d.tube_losses = true;
     return d;
@@ -212,7 +216,8 @@ void add_chain_effects(std::vector<EffectCandidate>& out, const ContextPtr& c) {
 /// reference_plane: alone by its closed form R e^{−2jkδ} (no geometry needed); in a composition one
 /// deviation of the chain, which reproduces the closed form exactly (two_microphone.hpp).
 EffectCandidate reference_plane(const ContextPtr& c) {
-  EffectCandidate e = chain_effect("reference_plane", {{"delta_m", Shape::uniform, -10 * kMm, 10 * kMm}}, c,
+  EffectCandidate e = chain_effect("reference_plane", "measure where the sample face sits",
+                                   {{"delta_m", Shape::uniform, -10 * kMm, 10 * kMm}}, c,
                                    [](const double* t) {
                                      ChainDeviation d;
                                      d.reference_plane_m = t[0];
@@ -233,12 +238,12 @@ EffectCandidate heteroscedastic_noise(const ContextPtr& c) {
           {},
           {},
           shape,
-          c, {}, {}};
+          c, {}, {}, "check the microphones' noise"};
 }
 
 EffectCandidate edge_gap(const ContextPtr& c) {
   return sample_effect(
-      "edge_gap",
+      "edge_gap", "check how the sample fits its holder",
       {{"width_m", Shape::log_uniform, 0.05 * kMm, 3 * kMm}, {"depth_m", Shape::log_uniform, 5 * kMm, 200 * kMm}}, c,
       [c](const Eigen::ArrayXcd& y, const double* t) { return c->slit.edge_gap(EdgeGap{t[0], t[1]}, *c->tube.diameter_m, y); });
 }
@@ -246,6 +251,7 @@ EffectCandidate edge_gap(const ContextPtr& c) {
 EffectCandidate frame_resonance(const ContextPtr& c) {
   const double f_min = c->f[0], f_max = c->f[c->f.size() - 1];
   return sample_effect("frame_resonance",
+                       "check the sample's mounting (a resonance at a band edge may lie outside the data)",
                        {{"f0_hz", Shape::log_uniform, f_min, f_max}, {"q", Shape::log_uniform, 1, 100},
                         {"y_peak", Shape::log_uniform, 1e-3, 3}},
                        c, [c](const Eigen::ArrayXcd& y, const double* t) {
@@ -255,7 +261,7 @@ EffectCandidate frame_resonance(const ContextPtr& c) {
 
 EffectCandidate fractional_order(const ContextPtr& c) {
   const double f_ref = std::sqrt(c->f[0] * c->f[c->f.size() - 1]);
-  EffectCandidate e = sample_effect("fractional_order",
+  EffectCandidate e = sample_effect("fractional_order", "check the sample's frame and its mounting",
                                     {{"c_plus", Shape::uniform, 0.0, 0.5}, {"c_minus", Shape::uniform, 0.0, 0.5}}, c,
                                     [c, f_ref](const Eigen::ArrayXcd& y, const double* t) {
                                       return apply_fractional_order(FractionalOrder{t[0], t[1], f_ref}, c->f, y);
@@ -265,13 +271,13 @@ EffectCandidate fractional_order(const ContextPtr& c) {
 }
 
 EffectCandidate air_gap(const ContextPtr& c) {
-  return simulated_effect("air_gap", {{"gap_m", Shape::log_uniform, 0.1 * kMm, 30 * kMm}}, c,
+  return simulated_effect("air_gap", "check what is behind the sample", {{"gap_m", Shape::log_uniform, 0.1 * kMm, 30 * kMm}}, c,
                           [](SimulatedChange& s, const double* t) { s.layers->layers.push_back(AirLayer{t[0]}); });
 }
 
 /// One catalogue parameter of the SPEC, times a free ratio.
 EffectCandidate material(const ContextPtr& c, const SpecParameter& p) {
-  return simulated_effect("material", {{p.name, Shape::log_uniform, p.ratio_lo, p.ratio_hi}}, c,
+  return simulated_effect("material", "measure that catalogue value on the sample", {{p.name, Shape::log_uniform, p.ratio_lo, p.ratio_hi}}, c,
                           [in = p.in](SimulatedChange& s, const double* t) { in(*s.layers) *= t[0]; });
 }
 
@@ -287,7 +293,7 @@ std::optional<ParameterPrior> frequency_scale_prior(const EffectContext& c) {
 }
 
 EffectCandidate frequency_scale(const ContextPtr& c, const ParameterPrior& prior) {
-  EffectCandidate e = simulated_effect("frequency_scale", {prior}, c,
+  EffectCandidate e = simulated_effect("frequency_scale", "check the simulated side's frequency axis", {prior}, c,
                                        [](SimulatedChange& s, const double* t) { s.frequency_ratio *= t[0]; });
   e.predict = [c](const double* t) { return plain(c->sim.admittance(c->f * t[0])); };
   return e;

@@ -101,6 +101,9 @@ struct EffectCandidate {
   /// joint candidates that hold it (combine_effects). Built on first use and shared by every joint
   /// candidate of the diagnosis, so built once however many rounds of the combined search use it.
   std::shared_ptr<const SimulatedTable> table;
+  /// What to check on the tube or the sample when the data ask for more of this effect than its prior
+  /// allows (diagnosis/prior_bound.hpp), in words; set for every effect, empty for a joint candidate.
+  std::string check;
 
   /// The name, and for material the parameter ("material 1.sigma"): unique among the candidates.
   std::string label() const;

@@ -190,10 +190,21 @@ struct Search {
   /// best, and is it decisive against now), so screened like one (evaluate_contenders). The members kept
   /// from `now` sample from its posterior with the uniform share of a single effect: the member swapped in
   /// may take over part of what they explained.
-  std::vector<EffectResult> evaluate_swaps(const std::vector<std::vector<std::size_t>>& models, const Explanation& now) {
+  /// `early_stop` false: no screening run stops early (pair_exchange).
+  std::vector<EffectResult> evaluate_swaps(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
+                                           bool early_stop = true) {
     const std::vector<EffectCandidate> tried = combined(models, now, kReferenceShareSingle);
     return with_gaps(models, tried,
-                     evaluate_contenders(tried, likelihood, settings, now.joint.log_z, take_streams(models.size()), progress));
+                     evaluate_contenders(tried, likelihood, early_stop ? settings : without_early_stop(),
+                                         now.joint.log_z, take_streams(models.size()), progress));
+  }
+
+  /// The settings with no early stop: held to a leader this close, a screening run of 25 live points can
+  /// stop before it has found a peak that lies far from where the explanation put its members.
+  IdentificationSettings without_early_stop() const {
+    IdentificationSettings out = settings;
+    out.early_stop_deciban = 0.0;
+    return out;
   }
 
   /// `results` of the models with their gap fields filled and the last member as their candidate.
@@ -284,6 +295,68 @@ void mimic_swap(Search& search, Explanation& out, EffectResult& prefix) {
   keep_best_swap(search, swapped, out, prefix);
 }
 
+/// The pair exchange after the additions end with the residual still structured (docs/diagnosis.md,
+/// "Pair exchange"): the greedy path can end two members away from the truth (one stands in for a true
+/// effect and another makes up the difference), which no single swap reaches. For every pair of members
+/// taken out together, the rest is grown back by two greedy additions from the candidates not in the
+/// explanation: the best third member by screened evidence, then every fourth beside it. The regrown
+/// explanations are screened like a swap pass (evaluate_swaps) and the best is kept when it is decisive
+/// (≥ 20 dB) against the explanation as it stands. Returns whether one was kept; needs three members.
+bool pair_exchange(Search& search, Explanation& out, EffectResult& prefix) {
+  const std::vector<std::size_t> members = member_indices(out.steps);
+  if (members.size() < 3) return false;
+  const std::size_t n = search.candidates.size();
+  const auto outside = [&](std::size_t i) { return std::find(members.begin(), members.end(), i) == members.end(); };
+  // The members kept when members a and b are taken out, in their order.
+  std::vector<std::vector<std::size_t>> bases;
+  for (std::size_t a = 0; a < members.size(); ++a)
+    for (std::size_t b = a + 1; b < members.size(); ++b) bases.push_back(without(without(members, b), a));
+  std::vector<std::vector<std::size_t>> grown;
+  std::vector<std::size_t> base_of;
+  for (std::size_t k = 0; k < bases.size(); ++k)
+    for (std::size_t i = 0; i < n; ++i)
+      if (outside(i)) {
+        grown.push_back(bases[k]);
+        grown.back().push_back(i);
+        base_of.push_back(k);
+      }
+  const std::vector<EffectResult> first = search.evaluate_swaps(grown, out, false);
+  out.rounds.push_back(first);
+  std::vector<std::size_t> best(bases.size(), grown.size());
+  for (std::size_t m = 0; m < grown.size(); ++m)
+    if (best[base_of[m]] == grown.size() || first[m].log_z > first[best[base_of[m]]].log_z) best[base_of[m]] = m;
+  // Each fourth samples from the screened posterior of its base and third (the members kept there may
+  // have moved far from where the explanation put them) and the fourth's single-effect one.
+  std::vector<std::vector<std::size_t>> regrown;
+  std::vector<EffectCandidate> tried;
+  for (std::size_t k = 0; k < bases.size(); ++k) {
+    if (best[k] == grown.size()) continue;
+    Explanation middle;
+    for (const std::size_t i : grown[best[k]]) middle.steps.push_back({i, 0.0, 1.0});
+    middle.joint = first[best[k]];
+    std::vector<std::vector<std::size_t>> fourths;
+    for (std::size_t i = 0; i < n; ++i)
+      if (outside(i) && i != grown[best[k]].back()) {
+        fourths.push_back(grown[best[k]]);
+        fourths.back().push_back(i);
+      }
+    const std::vector<EffectCandidate> c = search.combined(fourths, middle, kReferenceShareSingle);
+    regrown.insert(regrown.end(), fourths.begin(), fourths.end());
+    tried.insert(tried.end(), c.begin(), c.end());
+  }
+  if (regrown.empty()) return false;
+  std::vector<EffectResult> results = search.with_gaps(
+      regrown, tried,
+      evaluate_contenders(tried, search.likelihood, search.without_early_stop(), out.joint.log_z,
+                          search.take_streams(regrown.size()), search.progress));
+  out.rounds.push_back(results);
+  const std::size_t top = best_of(results);
+  if (deciban(results[top].log_z, out.joint.log_z) < kDecisiveDeciban) return false;
+  out.steps = search.restate(regrown[top], results[top], out, prefix);
+  out.joint = results[top];
+  return true;
+}
+
 /// The backward step after round `round`: each member against the explanation without it (a single
 /// effect from the single effects, the one without the last member from `prefix`, the others
 /// evaluated); the weakest is dropped when the explanation with it is not decisively (≥ 20 dB) better,
@@ -319,6 +392,49 @@ void backward_step(Search& search, std::size_t round, EffectResult prefix, Expla
     const std::vector<std::size_t> rest = without(members, weakest);
     out.steps = search.restate(rest, reduced[weakest], out, prefix);
     out.joint = reduced[weakest];
+  }
+}
+
+/// The addition rounds from round `round` on (each with its swap or mimic swap and its backward step),
+/// until no addition is decisive, the explanation holds kMaxExplanationEffects members or the rounds run
+/// out; `round` is left at the next round.
+void add_members(Search& search, std::size_t& round, Explanation& out) {
+  const std::vector<EffectCandidate>& candidates = search.candidates;
+  const std::size_t n = candidates.size();
+  const IdentificationSettings& settings = search.settings;
+  Progress& progress = search.progress;
+  const Eigen::ArrayXd& f_hz = search.f_hz;
+  const Eigen::ArrayXcd& y_real = search.y_real;
+  const Gap& gap_before = search.gap_before;
+  for (; round <= kMaxExplanationRounds && out.steps.size() < kMaxExplanationEffects; ++round) {
+    // A white residual leaves no structure in the mean; only the noise shape, which the lag-1 test
+    // cannot see, may still be missing.
+    const bool white = out.joint.gap_after.whiteness.white;
+    std::vector<std::size_t> added;
+    std::vector<std::vector<std::size_t>> models;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!search.offered(out.steps, i)) continue;
+      if (white && candidates[i].stage != EffectStage::noise) continue;
+      models.push_back(member_indices(out.steps));
+      models.back().push_back(i);
+      added.push_back(i);
+    }
+    if (models.empty()) break;
+    const std::vector<EffectCandidate> tried = search.combined(models, out);
+    std::vector<EffectResult> results = evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z,
+                                                            search.take_streams(models.size()), progress);
+    out.rounds.push_back(results);
+    const std::size_t best = best_of(results);
+    const double bf = deciban(results[best].log_z, out.joint.log_z);
+    if (bf < kDecisiveDeciban) break;
+    results[best].candidate = added[best];
+    fill_gap(results[best], tried[best], f_hz, y_real, gap_before);
+    EffectResult prefix = out.joint;
+    out.steps.push_back({added[best], bf, out.joint.gap_after.total / results[best].gap_after.total});
+    out.joint = results[best];
+    if (!out.joint.gap_after.whiteness.white) swap_round(search, out, prefix);
+    else mimic_swap(search, out, prefix);
+    backward_step(search, round, prefix, out);
   }
 }
 
@@ -397,34 +513,12 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
   if (deciban(singles[first].log_z, log_z_none) < kDecisiveDeciban) return out;
   out.steps.push_back({first, deciban(singles[first].log_z, log_z_none), singles[first].shrink});
   out.joint = singles[first];
-  for (std::size_t round = 1; round <= kMaxExplanationRounds && out.steps.size() < kMaxExplanationEffects; ++round) {
-    // A white residual leaves no structure in the mean; only the noise shape, which the lag-1 test
-    // cannot see, may still be missing.
-    const bool white = out.joint.gap_after.whiteness.white;
-    std::vector<std::size_t> added;
-    std::vector<std::vector<std::size_t>> models;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!search.offered(out.steps, i)) continue;
-      if (white && candidates[i].stage != EffectStage::noise) continue;
-      models.push_back(member_indices(out.steps));
-      models.back().push_back(i);
-      added.push_back(i);
-    }
-    if (models.empty()) break;
-    const std::vector<EffectCandidate> tried = search.combined(models, out);
-    std::vector<EffectResult> results = evaluate_contenders(tried, search.likelihood, settings, out.joint.log_z,
-                                                            search.take_streams(models.size()), progress);
-    out.rounds.push_back(results);
-    const std::size_t best = best_of(results);
-    const double bf = deciban(results[best].log_z, out.joint.log_z);
-    if (bf < kDecisiveDeciban) break;
-    results[best].candidate = added[best];
-    fill_gap(results[best], tried[best], f_hz, y_real, gap_before);
-    EffectResult prefix = out.joint;
-    out.steps.push_back({added[best], bf, out.joint.gap_after.total / results[best].gap_after.total});
-    out.joint = results[best];
-    if (!out.joint.gap_after.whiteness.white) swap_round(search, out, prefix);
-    else mimic_swap(search, out, prefix);
+  std::size_t round = 1;
+  for (int exchange = 0;; ++exchange) {
+    add_members(search, round, out);
+    if (out.joint.gap_after.whiteness.white || exchange == kPairExchanges) break;
+    EffectResult prefix;
+    if (!pair_exchange(search, out, prefix)) break;
     backward_step(search, round, prefix, out);
   }
   out.joint.bayes_factor_deciban = deciban(out.joint.log_z, log_z_none);

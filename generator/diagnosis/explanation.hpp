@@ -64,6 +64,9 @@ inline constexpr std::size_t kMimicsPerMember = 1;
 /// A member rides beside a partner when their single-effect corrections ŷ − y_sim have |cos| at least this
 /// (explanation.cpp Search::beside_partner): the backward step then runs the explanation without it in full.
 inline constexpr double kPartnerLikeness = 0.5;
+/// Pair exchanges at most (explanation.cpp pair_exchange): after the additions end with the residual
+/// structured, two members are taken out and regrown, and the additions go on from what is kept.
+inline constexpr int kPairExchanges = 2;
 /// Addition rounds at most: each round adds one member, the backward step may take members out again.
 inline constexpr std::size_t kMaxExplanationRounds = 2 * kMaxExplanationEffects;
 /// A member whose share of the squared gap is at least this, and which alone explains at least this

@@ -17,20 +17,6 @@ bool physical_limit(const std::string& effect, const ParameterPrior& prior, bool
   return !upper && prior.shape == ParameterPrior::Shape::uniform && prior.lo == 0.0;
 }
 
-/// What to check when `effect`'s parameter is held by its prior's bound.
-std::string what_to_check(const std::string& effect) {
-  if (effect == "reference_plane") return "measure where the sample face sits";
-  if (effect == "mic_spacing") return "measure the microphone spacing";
-  if (effect == "mic_mismatch") return "calibrate the microphones (swap them, ISO 10534-2)";
-  if (effect == "temperature") return "measure the air temperature in the tube";
-  if (effect == "edge_gap") return "check how the sample fits its holder";
-  if (effect == "frame_resonance") return "check the sample's mounting (a resonance at a band edge may lie outside the data)";
-  if (effect == "air_gap") return "check what is behind the sample";
-  if (effect == "frequency_scale") return "check the simulated side's frequency axis";
-  if (effect == "material") return "measure that catalogue value on the sample";
-  return "check that quantity directly";
-}
-
 }  // namespace
 
 std::vector<PriorBoundHit> prior_bound_hits(const Explanation& explanation, const std::vector<EffectCandidate>& candidates) {
@@ -48,7 +34,7 @@ std::vector<PriorBoundHit> prior_bound_hits(const Explanation& explanation, cons
       out.push_back({c.name, prior.name, upper, upper ? prior.hi : prior.lo, s.mean,
                      fmt::format("the prior's bound, not the data, set this value: the effect may be larger than "
                                  "{} allows, or stand in for something outside the vocabulary; {}",
-                                 prior.describe(), what_to_check(c.name))});
+                                 prior.describe(), c.check)});
     }
   }
   return out;

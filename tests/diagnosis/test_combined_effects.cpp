@@ -75,6 +75,14 @@ TEST_CASE("combined effects reproduce synth's pipeline: air gap, surface effects
                             s.synth({"frame_resonance:f0_hz=600,q=8,y_peak=0.1", "reference_plane:delta_m=2mm"})) < 1e-12);
 }
 
+TEST_CASE("every effect says what to check when its prior's bound holds it; a joint candidate says nothing") {
+  const Setup s;
+  REQUIRE(s.all.size() >= 10);  // the chain, sample and simulated effects of a full-geometry SPEC
+  for (const auto& c : s.all) CHECK_MESSAGE(!c.check.empty(), c.label());
+  CHECK(find(s.all, "mic_mismatch").check.find("calibrate the microphones") != std::string::npos);
+  CHECK(diagnosis::combine_effects({&find(s.all, "mic_mismatch"), &find(s.all, "edge_gap")}).check.empty());
+}
+
 TEST_CASE("material candidates: one per numeric SPEC parameter, equal to the SPEC with that parameter scaled") {
   Setup s;
   s.spec = "jca(phi=0.94, sigma=40000, alpha_inf=1.06, lambda=56um, lambda_th=110um, d=30mm) + air(d=20mm)";
