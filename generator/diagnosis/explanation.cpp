@@ -322,27 +322,34 @@ bool pair_exchange(Search& search, Explanation& out, EffectResult& prefix) {
       }
   const std::vector<EffectResult> first = search.evaluate_swaps(grown, out, false);
   out.rounds.push_back(first);
-  std::vector<std::size_t> best(bases.size(), grown.size());
-  for (std::size_t m = 0; m < grown.size(); ++m)
-    if (best[base_of[m]] == grown.size() || first[m].log_z > first[best[base_of[m]]].log_z) best[base_of[m]] = m;
   // Each fourth samples from the screened posterior of its base and third (the members kept there may
-  // have moved far from where the explanation put them) and the fourth's single-effect one.
+  // have moved far from where the explanation put them) and the fourth's single-effect one. A fourth
+  // that is a better-ranked third of the same base is left out (that set is already tried).
   std::vector<std::vector<std::size_t>> regrown;
   std::vector<EffectCandidate> tried;
   for (std::size_t k = 0; k < bases.size(); ++k) {
-    if (best[k] == grown.size()) continue;
-    Explanation middle;
-    for (const std::size_t i : grown[best[k]]) middle.steps.push_back({i, 0.0, 1.0});
-    middle.joint = first[best[k]];
-    std::vector<std::vector<std::size_t>> fourths;
-    for (std::size_t i = 0; i < n; ++i)
-      if (outside(i) && i != grown[best[k]].back()) {
-        fourths.push_back(grown[best[k]]);
-        fourths.back().push_back(i);
-      }
-    const std::vector<EffectCandidate> c = search.combined(fourths, middle, kReferenceShareSingle);
-    regrown.insert(regrown.end(), fourths.begin(), fourths.end());
-    tried.insert(tried.end(), c.begin(), c.end());
+    std::vector<std::size_t> ranked;
+    for (std::size_t m = 0; m < grown.size(); ++m)
+      if (base_of[m] == k) ranked.push_back(m);
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [&](std::size_t a, std::size_t b) { return first[a].log_z > first[b].log_z; });
+    ranked.resize(std::min(ranked.size(), kThirdsPerPair));
+    std::vector<std::size_t> taken;
+    for (const std::size_t m : ranked) {
+      taken.push_back(grown[m].back());
+      Explanation middle;
+      for (const std::size_t i : grown[m]) middle.steps.push_back({i, 0.0, 1.0});
+      middle.joint = first[m];
+      std::vector<std::vector<std::size_t>> fourths;
+      for (std::size_t i = 0; i < n; ++i)
+        if (outside(i) && std::find(taken.begin(), taken.end(), i) == taken.end()) {
+          fourths.push_back(grown[m]);
+          fourths.back().push_back(i);
+        }
+      const std::vector<EffectCandidate> c = search.combined(fourths, middle, kReferenceShareSingle);
+      regrown.insert(regrown.end(), fourths.begin(), fourths.end());
+      tried.insert(tried.end(), c.begin(), c.end());
+    }
   }
   if (regrown.empty()) return false;
   std::vector<EffectResult> results = search.with_gaps(
@@ -519,6 +526,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
     if (out.joint.gap_after.whiteness.white || exchange == kPairExchanges) break;
     EffectResult prefix;
     if (!pair_exchange(search, out, prefix)) break;
+    if (!out.joint.gap_after.whiteness.white) swap_round(search, out, prefix);
     backward_step(search, round, prefix, out);
   }
   out.joint.bayes_factor_deciban = deciban(out.joint.log_z, log_z_none);

@@ -30,6 +30,12 @@
 ///   member are screened; one without a member that rides beside a partner (a mimic: their single-effect
 ///   corrections alike, kPartnerLikeness) is run in full, white residual or not: the partner must move
 ///   far to take over the member's part, which a screening run can miss.
+///   pair exchange: when the additions end with the residual structured and three or more members, every
+///   pair of members is taken out together and the rest regrown by two greedy additions (the
+///   kThirdsPerPair best thirds, every fourth beside each), screened without early stop; the best is
+///   kept when it is decisive, followed by a swap pass while structured, the backward step and further
+///   additions; at most kPairExchanges times. It reaches a truth two members away, which no single swap
+///   does.
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
 /// The evidence of a joint model pays the Occam factor of every added parameter, so an addition that
@@ -67,6 +73,8 @@ inline constexpr double kPartnerLikeness = 0.5;
 /// Pair exchanges at most (explanation.cpp pair_exchange): after the additions end with the residual
 /// structured, two members are taken out and regrown, and the additions go on from what is kept.
 inline constexpr int kPairExchanges = 2;
+/// Thirds regrown per pair taken out, the best by screened evidence (explanation.cpp pair_exchange).
+inline constexpr std::size_t kThirdsPerPair = 3;
 /// Addition rounds at most: each round adds one member, the backward step may take members out again.
 inline constexpr std::size_t kMaxExplanationRounds = 2 * kMaxExplanationEffects;
 /// A member whose share of the squared gap is at least this, and which alone explains at least this
