@@ -79,6 +79,9 @@ struct IdentificationSettings {
   /// every member, at most this many passes in all. 1: the first pass only (earlier members only), the
   /// search before repeated swaps (a test uses it to reach the backward step on a known path).
   int swap_passes = 3;
+  /// Pair exchanges of the combined search at most (explanation.hpp): after the additions end with the
+  /// residual structured, two members are taken out and regrown. 0: none, the search before them.
+  int pair_exchanges = 2;
 
   static NestedSettings effect_sampler() {
     NestedSettings s;

@@ -523,7 +523,7 @@ Explanation explain(const Eigen::ArrayXd& f_hz, const Eigen::ArrayXcd& y_real, c
   std::size_t round = 1;
   for (int exchange = 0;; ++exchange) {
     add_members(search, round, out);
-    if (out.joint.gap_after.whiteness.white || exchange == kPairExchanges) break;
+    if (out.joint.gap_after.whiteness.white || exchange >= settings.pair_exchanges) break;
     EffectResult prefix;
     if (!pair_exchange(search, out, prefix)) break;
     if (!out.joint.gap_after.whiteness.white) swap_round(search, out, prefix);

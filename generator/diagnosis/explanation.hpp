@@ -34,7 +34,7 @@
 ///   pair of members is taken out together and the rest regrown by two greedy additions (the
 ///   kThirdsPerPair best thirds, every fourth beside each), screened without early stop; the best is
 ///   kept when it is decisive, followed by a swap pass while structured, the backward step and further
-///   additions; at most kPairExchanges times. It reaches a truth two members away, which no single swap
+///   additions; at most IdentificationSettings::pair_exchanges (2) times. It reaches a truth two members away, which no single swap
 ///   does.
 ///
 /// Each effect enters at most once (each catalogue parameter of `material` counts as its own effect).
@@ -70,9 +70,6 @@ inline constexpr std::size_t kMimicsPerMember = 1;
 /// A member rides beside a partner when their single-effect corrections ŷ − y_sim have |cos| at least this
 /// (explanation.cpp Search::beside_partner): the backward step then runs the explanation without it in full.
 inline constexpr double kPartnerLikeness = 0.5;
-/// Pair exchanges at most (explanation.cpp pair_exchange): after the additions end with the residual
-/// structured, two members are taken out and regrown, and the additions go on from what is kept.
-inline constexpr int kPairExchanges = 2;
 /// Thirds regrown per pair taken out, the best by screened evidence (explanation.cpp pair_exchange).
 inline constexpr std::size_t kThirdsPerPair = 3;
 /// Addition rounds at most: each round adds one member, the backward step may take members out again.
