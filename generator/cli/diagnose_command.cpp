@@ -205,6 +205,10 @@ void setup_diagnose_command(CLI::App& app, int& exit_code) {
   sub->add_option("--live", cmd->settings.sampler.live, "Live points per effect")->check(CLI::Range(10, 100000))->capture_default_str();
   sub->add_option("--dlogz", cmd->settings.sampler.dlogz, "Nested-sampling stopping tolerance")->check(CLI::Range(1e-6, 10.0))->capture_default_str();
   sub->add_option("--seed", cmd->settings.sampler.seed, "Random seed (each effect derives its own stream)")->capture_default_str();
+  sub->add_option("--pair-exchanges", cmd->settings.pair_exchanges,
+                  "Pair exchanges of the combined search when it ends with structure left (0 = none)")
+      ->check(CLI::Range(0, 8))
+      ->capture_default_str();
   sub->add_option("--threads,-j", cmd->settings.threads,
                   "Worker threads over candidate effects (0 = all cores); results do not depend on it")
       ->check(CLI::Range(0, 1024))

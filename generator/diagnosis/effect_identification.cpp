@@ -219,6 +219,10 @@ std::string describe_evidence_methods(const IdentificationSettings& s) {
                       "(earlier posteriors widened {:g}x plus a uniform share) with the likelihood divided by it, "
                       "the same evidence",
                       kReferenceWidening);
+  if (s.pair_exchanges > 0)
+    text += fmt::format("; when the combined search ends with structure left, two members at a time are taken out "
+                        "and regrown (at most {} times)",
+                        s.pair_exchanges);
   return text;
 }
 
