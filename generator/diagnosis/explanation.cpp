@@ -299,9 +299,10 @@ void mimic_swap(Search& search, Explanation& out, EffectResult& prefix) {
 /// "Pair exchange"): the greedy path can end two members away from the truth (one stands in for a true
 /// effect and another makes up the difference), which no single swap reaches. For every pair of members
 /// taken out together, the rest is grown back by two greedy additions from the candidates not in the
-/// explanation: the best third member by screened evidence, then every fourth beside it. The regrown
-/// explanations are screened like a swap pass (evaluate_swaps) and the best is kept when it is decisive
-/// (≥ 20 dB) against the explanation as it stands. Returns whether one was kept; needs three members.
+/// explanation: the kThirdsPerPair best third members by screened evidence, then every fourth beside
+/// each. All screening runs go without early stop (Search::without_early_stop). The best regrown
+/// explanation is kept when it is decisive (≥ 20 dB) against the explanation as it stands. Returns
+/// whether one was kept; needs three members.
 bool pair_exchange(Search& search, Explanation& out, EffectResult& prefix) {
   const std::vector<std::size_t> members = member_indices(out.steps);
   if (members.size() < 3) return false;
