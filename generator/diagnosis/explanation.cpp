@@ -2,11 +2,13 @@
 #include "diagnosis/explanation.hpp"
 
 #include "core/errors.hpp"
+#include "core/parallel.hpp"
 #include "inference/evidence.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <future>
 
 namespace admitgen::diagnosis {
 namespace {
@@ -164,24 +166,41 @@ struct Search {
     // has found a peak that lies far from where the whole explanation put the remaining members.
     IdentificationSettings screened = settings;
     screened.early_stop_deciban = 0.0;
-    std::vector<EffectResult> results =
-        evaluate_contenders(tried, likelihood, screened, reference, take_streams(models.size()), progress);
+    const std::uint64_t screen_streams = take_streams(models.size());
     std::vector<std::size_t> again;
     std::vector<EffectCandidate> full;
     for (std::size_t k = 0; k < models.size(); ++k)
-      if (in_full[k] && results[k].method == "screened") {
+      if (in_full[k]) {
         again.push_back(k);
         full.push_back(tried[k]);
       }
-    if (!again.empty()) {
-      std::vector<EffectResult> runs =
-          evaluate_candidates(full, likelihood, screened, reference, take_streams(again.size()), progress);
-      for (std::size_t k = 0; k < again.size(); ++k) {
-        runs[k].seconds += results[again[k]].seconds;
-        runs[k].cpu_seconds += results[again[k]].cpu_seconds;
-        runs[k].calls += results[again[k]].calls;
-        results[again[k]] = std::move(runs[k]);
-      }
+    const std::uint64_t full_streams = take_streams(again.size());
+    // The full runs do not depend on the screening, so with two or more workers they start beside it on
+    // one of them (the screening keeps the others): a long full run no longer runs alone at the end.
+    // Every run keeps its seed stream, so the results do not depend on the thread count.
+    const std::size_t workers = worker_count(settings.threads, models.size() + again.size());
+    std::vector<EffectResult> results, runs;
+    if (workers >= 2 && !again.empty()) {
+      IdentificationSettings beside = screened;
+      beside.threads = static_cast<int>(workers - 1);
+      IdentificationSettings one = screened;
+      one.threads = 1;
+      std::future<std::vector<EffectResult>> running = std::async(std::launch::async, [&] {
+        return evaluate_candidates(full, likelihood, one, reference, full_streams, progress);
+      });
+      results = evaluate_contenders(tried, likelihood, beside, reference, screen_streams, progress);
+      runs = running.get();
+    } else {
+      results = evaluate_contenders(tried, likelihood, screened, reference, screen_streams, progress);
+      runs = evaluate_candidates(full, likelihood, screened, reference, full_streams, progress);
+    }
+    // A model whose screening made it a contender already has its full run (evaluate_contenders).
+    for (std::size_t k = 0; k < again.size(); ++k) {
+      if (results[again[k]].method != "screened") continue;
+      runs[k].seconds += results[again[k]].seconds;
+      runs[k].cpu_seconds += results[again[k]].cpu_seconds;
+      runs[k].calls += results[again[k]].calls;
+      results[again[k]] = std::move(runs[k]);
     }
     return with_gaps(models, tried, std::move(results));
   }
