@@ -154,7 +154,8 @@ struct Search {
   /// the whole explanation's posterior with a single effect's uniform share: they may take over the work of
   /// the member taken out.
   /// A model flagged in `in_full` (the explanation without a member that rides beside its partner) is run
-  /// in full whatever its screening run found, on the next block of streams after the screening's: its
+  /// in full whatever its screening run found, on the next block of streams after the screening's (that
+  /// run kept, unless the screening already made the model a contender with its own full run): its
   /// partner must move far from where the whole explanation put it to take over the member's part, which a
   /// screening run of 25 live points can miss.
   std::vector<EffectResult> evaluate_reduced(const std::vector<std::vector<std::size_t>>& models, const Explanation& now,
