@@ -110,7 +110,9 @@ void details(const diagnosis::Diagnosis& d, const Options& o) {
 }
 
 /// The case's own effects fitted jointly (full nested sampling from the prior, the search's seed): their
-/// Bayes factor against no effect beside the verdict's, and whether they leave the residual white. A
+/// Bayes factor against no effect beside the verdict's, and whether they leave the residual white; then
+/// four runs with the screening's live points from the prior (on streams of their own), to tell a
+/// screening that cannot find the truth's peak from one held off it by its reference densities. A
 /// miss where the truth has the larger evidence is the search's; one where it has the smaller is the
 /// data's (the vocabulary explains them better another way).
 void truth_evidence(const ValidationCase& c, const diagnosis::Diagnosis& d, const Options& o) {

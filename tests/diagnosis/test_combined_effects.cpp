@@ -75,7 +75,7 @@ TEST_CASE("combined effects reproduce synth's pipeline: air gap, surface effects
                             s.synth({"frame_resonance:f0_hz=600,q=8,y_peak=0.1", "reference_plane:delta_m=2mm"})) < 1e-12);
 }
 
-TEST_CASE("every effect says what to check when its prior's bound holds it; a joint candidate says nothing") {
+TEST_CASE("every effect says what to check when its prior's bound holds it, and a joint candidate says nothing") {
   const Setup s;
   REQUIRE(s.all.size() >= 10);  // the chain, sample and simulated effects of a full-geometry SPEC
   for (const auto& c : s.all) CHECK_MESSAGE(!c.check.empty(), c.label());
