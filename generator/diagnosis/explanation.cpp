@@ -259,19 +259,25 @@ struct Search {
   }
 };
 
+/// Of the evaluated explanations `models` (their `results`, recorded as a round of `out`), keeps the best
+/// when it is decisive (≥ 20 dB) against `out`, restating its steps and `prefix`. Returns whether it did.
+bool keep_best(Search& search, const std::vector<std::vector<std::size_t>>& models,
+               const std::vector<EffectResult>& results, Explanation& out, EffectResult& prefix) {
+  out.rounds.push_back(results);
+  const std::size_t best = best_of(results);
+  if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return false;
+  out.steps = search.restate(models[best], results[best], out, prefix);
+  out.joint = results[best];
+  return true;
+}
+
 /// Evaluates the explanations `swapped` (each `out` with one member replaced), screened like an addition
 /// round, and keeps the best when it is decisive (≥ 20 dB) against `out`, restating its steps and `prefix`.
 /// Returns whether one was kept (false also when there is none).
 bool keep_best_swap(Search& search, const std::vector<std::vector<std::size_t>>& swapped, Explanation& out,
                     EffectResult& prefix) {
   if (swapped.empty()) return false;
-  std::vector<EffectResult> results = search.evaluate_swaps(swapped, out);
-  out.rounds.push_back(results);
-  const std::size_t best = best_of(results);
-  if (deciban(results[best].log_z, out.joint.log_z) < kDecisiveDeciban) return false;
-  out.steps = search.restate(swapped[best], results[best], out, prefix);
-  out.joint = results[best];
-  return true;
+  return keep_best(search, swapped, search.evaluate_swaps(swapped, out), out, prefix);
 }
 
 /// The swap step after an addition that leaves the residual structured: every earlier member in turn
@@ -327,7 +333,8 @@ bool pair_exchange(Search& search, Explanation& out, EffectResult& prefix) {
   const std::vector<std::size_t> members = member_indices(out.steps);
   if (members.size() < 3) return false;
   const std::size_t n = search.candidates.size();
-  const auto outside = [&](std::size_t i) { return std::find(members.begin(), members.end(), i) == members.end(); };
+  // Every candidate not in the explanation, a dropped one included: the exchange may bring it back.
+  const auto outside = [&](std::size_t i) { return !holds(out.steps, i); };
   // The members kept when members a and b are taken out, in their order.
   std::vector<std::vector<std::size_t>> bases;
   for (std::size_t a = 0; a < members.size(); ++a)
@@ -373,16 +380,12 @@ bool pair_exchange(Search& search, Explanation& out, EffectResult& prefix) {
     }
   }
   if (regrown.empty()) return false;
-  std::vector<EffectResult> results = search.with_gaps(
-      regrown, tried,
-      evaluate_contenders(tried, search.likelihood, search.without_early_stop(), out.joint.log_z,
-                          search.take_streams(regrown.size()), search.progress));
-  out.rounds.push_back(results);
-  const std::size_t top = best_of(results);
-  if (deciban(results[top].log_z, out.joint.log_z) < kDecisiveDeciban) return false;
-  out.steps = search.restate(regrown[top], results[top], out, prefix);
-  out.joint = results[top];
-  return true;
+  return keep_best(search, regrown,
+                   search.with_gaps(regrown, tried,
+                                    evaluate_contenders(tried, search.likelihood, search.without_early_stop(),
+                                                        out.joint.log_z, search.take_streams(regrown.size()),
+                                                        search.progress)),
+                   out, prefix);
 }
 
 /// The backward step after round `round`: each member against the explanation without it (a single
